@@ -1,0 +1,128 @@
+"""Constant folding: Python's own operators and pure builtins applied to constant sets.
+
+Each operation runs on the cartesian product of the operands' constants (bounded by
+the value lattice) with the real Python semantics, and with guards so that folding
+can neither hang nor blow up memory (no huge powers, no giant strings).  Anything
+that raises, or is not on the allow-lists, folds to ⊤.
+"""
+from __future__ import annotations
+
+import ast
+import itertools
+import operator
+from typing import Any, Callable
+
+from .values import MAX_ATOMS, TOP, Value, atoms, Const
+
+#: Longest string/bytes a folded operation may produce.
+MAX_STR = 4096
+
+BINOPS: dict[type, Callable[[Any, Any], Any]] = {
+    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
+    ast.Div: operator.truediv, ast.FloorDiv: operator.floordiv, ast.Mod: operator.mod,
+    ast.Pow: operator.pow, ast.BitAnd: operator.and_, ast.BitOr: operator.or_,
+    ast.BitXor: operator.xor, ast.LShift: operator.lshift, ast.RShift: operator.rshift,
+}
+UNARYOPS: dict[type, Callable[[Any], Any]] = {
+    ast.USub: operator.neg, ast.UAdd: operator.pos, ast.Not: operator.not_,
+    ast.Invert: operator.invert,
+}
+CMPOPS: dict[type, Callable[[Any, Any], Any]] = {
+    ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le,
+    ast.Gt: operator.gt, ast.GtE: operator.ge, ast.Is: operator.is_, ast.IsNot: operator.is_not,
+    ast.In: lambda a, b: operator.contains(b, a),
+    ast.NotIn: lambda a, b: not operator.contains(b, a),
+}
+
+#: Pure builtins that fold on constants.
+PURE_BUILTINS: dict[str, Callable[..., Any]] = {
+    "str": str, "int": int, "float": float, "bool": bool, "abs": abs, "round": round,
+    "min": min, "max": max, "len": len, "repr": repr, "hex": hex, "oct": oct, "bin": bin,
+    "chr": chr, "ord": ord,
+}
+#: str methods that fold on constants (no side effects, bounded output).
+STR_METHODS = frozenset({
+    "format", "join", "upper", "lower", "strip", "lstrip", "rstrip", "replace", "capitalize",
+    "title", "startswith", "endswith", "removeprefix", "removesuffix", "zfill", "casefold",
+    "isdigit", "isalpha", "isalnum", "isidentifier", "find", "count", "split", "rsplit",
+    "swapcase", "center", "ljust", "rjust", "encode",
+})
+
+
+def _safe(result: Any) -> bool:
+    if isinstance(result, (str, bytes)):
+        return len(result) <= MAX_STR
+    if isinstance(result, int) and not isinstance(result, bool):
+        return result.bit_length() <= 256
+    if isinstance(result, (list, tuple)):
+        return len(result) <= MAX_ATOMS and all(_safe(x) for x in result)
+    return isinstance(result, (float, bool, complex)) or result is None
+
+
+def _guard_args(fn: Callable, args: tuple) -> bool:
+    """Refuse operations that could take unbounded time or memory before running them."""
+    if fn is operator.pow and len(args) == 2:
+        base, exp = args
+        return isinstance(exp, (int, float)) and abs(exp) <= 64
+    if fn in (operator.mul, operator.lshift) and len(args) == 2:
+        a, b = args
+        for x, y in ((a, b), (b, a)):
+            if isinstance(x, (str, bytes)) and isinstance(y, int) and y * len(x) > MAX_STR:
+                return False
+        if fn is operator.lshift and isinstance(b, int) and b > 256:
+            return False
+    return True
+
+
+def fold(fn: Callable[..., Any], operands: list[Value], wrap=None) -> Value:
+    """Apply ``fn`` to every combination of the operands' constants."""
+    pools = []
+    size = 1
+    for value in operands:
+        consts = value.consts()
+        if consts is None:
+            return TOP if not value.is_bottom else value
+        if not consts:
+            return value  # ⊥ in, ⊥ out
+        pools.append(consts)
+        size *= len(consts)
+        if size > MAX_ATOMS * MAX_ATOMS:
+            return TOP
+    out = []
+    for combo in itertools.product(*pools):
+        if not _guard_args(fn, combo):
+            return TOP
+        try:
+            result = fn(*combo)
+        except Exception:  # the folded operation raises at run time: no value flows on
+            continue
+        if not _safe(result):
+            return TOP
+        if wrap is not None:
+            atom = wrap(result)
+            if atom is None:
+                return TOP
+            out.append(atom)
+        elif isinstance(result, (list, tuple)):
+            return TOP
+        else:
+            out.append(Const.of(result))
+    return atoms(out)
+
+
+def call_str_method(name: str, receiver: Value, args: list[Value]) -> Value:
+    if name not in STR_METHODS:
+        return TOP
+    return fold(lambda s, *a: getattr(s, name)(*a) if isinstance(s, str) else _fail(),
+                [receiver, *args], wrap=_wrap_seq)
+
+
+def _fail():
+    raise TypeError
+
+
+def _wrap_seq(result: Any):
+    from .values import Seq, const
+    if isinstance(result, list):
+        return Seq("list", tuple(const(x) for x in result))
+    return Const.of(result)

@@ -1,0 +1,356 @@
+"""Library models: what code outside the workspace does, read from declarative TOML stubs.
+
+The analyser never imports a library; it learns from stub files (schema in
+``docs/stubs.md``) which functions and classes exist, their real parameter lists,
+what they return, which arguments they call back later, which *effects* a call has
+(an opaque ``kind`` plus argument references, interpreted by whoever consumes the
+effects — the analyser itself gives them no meaning) and which values they store on
+an object for a later call to load.  Stub files are data only: parameter lists are
+parsed with :mod:`ast` and defaults read with :func:`ast.literal_eval`.
+
+A broken entry is skipped with a message naming the file and key; the rest loads.
+"""
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterable
+
+try:
+    import tomllib
+except ImportError:  # Python 3.10
+    import tomli as tomllib  # type: ignore[no-redef]
+
+from .values import Const, ConstType, Record, Value, atoms, const
+
+
+class StubError(Exception):
+    """A stub entry that does not follow the schema; the message names file and key."""
+
+
+@dataclass(frozen=True)
+class Param:
+    name: str
+    kind: str                 # "pos" | "kwonly" | "varargs" | "varkw"
+    default: Value | None     # None: no default
+
+
+@dataclass(frozen=True)
+class Signature:
+    params: tuple[Param, ...]
+
+    @staticmethod
+    def parse(text: str) -> "Signature":
+        try:
+            fn = ast.parse(f"def f({text}): pass").body[0]
+        except SyntaxError as exc:
+            raise StubError(f"bad parameter list {text!r}: {exc.msg}") from None
+        args = fn.args
+        out: list[Param] = []
+        positional = args.posonlyargs + args.args
+        defaults = [None] * (len(positional) - len(args.defaults)) + list(args.defaults)
+        for arg, default in zip(positional, defaults):
+            out.append(Param(arg.arg, "pos", _literal(default)))
+        if args.vararg:
+            out.append(Param(args.vararg.arg, "varargs", None))
+        for arg, default in zip(args.kwonlyargs, args.kw_defaults):
+            out.append(Param(arg.arg, "kwonly", _literal(default)))
+        if args.kwarg:
+            out.append(Param(args.kwarg.arg, "varkw", None))
+        return Signature(tuple(out))
+
+
+def _literal(node: ast.expr | None) -> Value | None:
+    if node is None:
+        return None
+    try:
+        return from_data(ast.literal_eval(node))
+    except ValueError:
+        raise StubError(f"default {ast.unparse(node)!r} is not a literal") from None
+
+
+def from_data(data: Any) -> Value:
+    """A TOML/literal value as an abstract value (tables become records)."""
+    if isinstance(data, (str, int, float, bool)) or data is None:
+        return const(data)
+    if isinstance(data, (list, tuple)):
+        from .values import Seq
+        return atoms([Seq("tuple", tuple(from_data(x) for x in data))])
+    if isinstance(data, dict):
+        return atoms([Record("dict", tuple(sorted((str(k), from_data(v)) for k, v in data.items())))])
+    raise StubError(f"unsupported value {data!r}")
+
+
+@dataclass(frozen=True)
+class Ref:
+    """Where an effect/return/store takes a value from.
+
+    ``how`` is "arg" (a parameter by name; "@return" is the call's result), "const"
+    (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
+    stored earlier on the object in parameter ``on`` under ``key``) or "field" (a
+    field of the receiver record).
+    """
+
+    how: str
+    data: Any
+    on: str | None = None
+
+
+def _ref(raw: Any, where: str) -> Ref:
+    if isinstance(raw, str):
+        return Ref("arg", raw)
+    if isinstance(raw, dict) and len(raw) >= 1:
+        keys = set(raw)
+        if keys == {"arg"} and isinstance(raw["arg"], str):
+            return Ref("arg", raw["arg"])
+        if keys == {"const"}:
+            return Ref("const", from_data(raw["const"]))
+        if keys == {"format"} and isinstance(raw["format"], str):
+            return Ref("format", raw["format"])
+        if keys == {"load", "on"} and isinstance(raw["load"], str):
+            return Ref("load", raw["load"], str(raw["on"]))
+        if keys == {"field"} and isinstance(raw["field"], str):
+            return Ref("field", raw["field"])
+    raise StubError(f"{where}: expected a parameter name or one of "
+                    "{{arg=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
+
+
+@dataclass(frozen=True)
+class EffectSpec:
+    kind: str
+    args: tuple[tuple[str, Ref], ...]
+
+
+@dataclass(frozen=True)
+class StoreSpec:
+    on: str
+    key: str          # a format template over parameters
+    value: Ref
+
+
+@dataclass(frozen=True)
+class ReturnSpec:
+    """``how``: "instance" (new object of class ``data``), "record" (a record of class
+    ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), or "unknown"."""
+
+    how: str
+    data: Any = None
+    fields: tuple[tuple[str, Ref], ...] = ()
+
+
+@dataclass(frozen=True)
+class FunctionModel:
+    qualname: str
+    signature: Signature
+    returns: ReturnSpec
+    effects: tuple[EffectSpec, ...] = ()
+    stores: tuple[StoreSpec, ...] = ()
+    callbacks: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class ClassModel:
+    qualname: str
+    bases: tuple[str, ...]
+    methods: dict[str, FunctionModel]
+    record: bool = False
+    entry: bool = False
+    calls_methods: tuple[str, ...] = ()
+
+
+@dataclass
+class LibraryModel:
+    functions: dict[str, FunctionModel] = field(default_factory=dict)
+    classes: dict[str, ClassModel] = field(default_factory=dict)
+    constants: dict[str, Value] = field(default_factory=dict)
+    aliases: dict[str, str] = field(default_factory=dict)
+    errors: list[str] = field(default_factory=list)
+
+    def canonical(self, qualname: str) -> str:
+        """Follow aliases (longest dotted prefix first): ``rclpy.lifecycle.Node`` → ``…LifecycleNode``."""
+        for _ in range(8):
+            parts = qualname.split(".")
+            for cut in range(len(parts), 0, -1):
+                head = ".".join(parts[:cut])
+                target = self.aliases.get(head)
+                if target is not None:
+                    qualname = ".".join([target] + parts[cut:])
+                    break
+            else:
+                return qualname
+        return qualname
+
+    def mro(self, qualname: str) -> list[str]:
+        """Library classes from ``qualname`` up its modelled bases (depth-first, no repeats)."""
+        out: list[str] = []
+        stack = [qualname]
+        while stack:
+            cur = stack.pop(0)
+            if cur in out:
+                continue
+            out.append(cur)
+            model = self.classes.get(cur)
+            if model:
+                stack[:0] = list(model.bases)
+        return out
+
+    def method(self, cls_qualname: str, name: str) -> FunctionModel | None:
+        for cls in self.mro(cls_qualname):
+            model = self.classes.get(cls)
+            if model and name in model.methods:
+                return model.methods[name]
+        return None
+
+    def class_flag(self, cls_qualname: str, flag: str) -> bool:
+        return any(getattr(self.classes.get(c), flag, False) for c in self.mro(cls_qualname))
+
+    def called_methods(self, cls_qualname: str) -> tuple[str, ...]:
+        out: list[str] = []
+        for cls in self.mro(cls_qualname):
+            model = self.classes.get(cls)
+            if model:
+                out.extend(m for m in model.calls_methods if m not in out)
+        return tuple(out)
+
+
+# -- loading ----------------------------------------------------------------------------
+_FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks"}
+_CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods"}
+_TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta"}
+
+
+def _table(raw: Any, where: str) -> dict:
+    if not isinstance(raw, dict):
+        raise StubError(f"{where}: expected a table, got {type(raw).__name__}")
+    return raw
+
+
+def _strings(raw: Any, where: str) -> tuple[str, ...]:
+    if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
+        raise StubError(f"{where}: expected a list of strings")
+    return tuple(raw)
+
+
+def _returns(raw: Any, where: str) -> ReturnSpec:
+    if raw is None:
+        return ReturnSpec("unknown")
+    if isinstance(raw, str):
+        return ReturnSpec("instance", raw)
+    raw = _table(raw, where)
+    if "record" in raw:
+        unknown = set(raw) - {"record", "fields"}
+        if unknown:
+            raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
+        fields = _table(raw.get("fields", {}), where + ".fields")
+        return ReturnSpec("record", str(raw["record"]),
+                          tuple(sorted((k, _ref(v, f"{where}.fields.{k}")) for k, v in fields.items())))
+    return ReturnSpec("ref", _ref(raw, where))
+
+
+def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
+    raw = _table(raw, where)
+    unknown = set(raw) - _FUNC_KEYS
+    if unknown:
+        raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
+    params = raw.get("params", "*args, **kwargs")
+    if not isinstance(params, str):
+        raise StubError(f"{where}.params: expected a string like \"self, topic, *, qos=10\"")
+    try:
+        signature = Signature.parse(params)
+    except StubError as exc:
+        raise StubError(f"{where}.params: {exc}") from None
+    effects = []
+    for i, eff in enumerate(raw.get("effects", [])):
+        eff = _table(eff, f"{where}.effects[{i}]")
+        kind = eff.get("kind")
+        if not isinstance(kind, str):
+            raise StubError(f"{where}.effects[{i}]: needs kind = \"…\"")
+        args = tuple(sorted((k, _ref(v, f"{where}.effects[{i}].{k}"))
+                            for k, v in eff.items() if k != "kind"))
+        effects.append(EffectSpec(kind, args))
+    stores = []
+    for i, st in enumerate(raw.get("stores", [])):
+        st = _table(st, f"{where}.stores[{i}]")
+        if set(st) != {"on", "key", "value"}:
+            raise StubError(f"{where}.stores[{i}]: needs exactly on, key, value")
+        stores.append(StoreSpec(str(st["on"]), str(st["key"]),
+                                _ref(st["value"], f"{where}.stores[{i}].value")))
+    return FunctionModel(qualname, signature, _returns(raw.get("returns"), where + ".returns"),
+                         tuple(effects), tuple(stores),
+                         _strings(raw.get("callbacks", []), where + ".callbacks"))
+
+
+def _class(qualname: str, raw: Any, where: str) -> ClassModel:
+    raw = _table(raw, where)
+    unknown = set(raw) - _CLASS_KEYS
+    if unknown:
+        raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
+    methods = {name: _function(f"{qualname}.{name}", m, f"{where}.methods.{name}")
+               for name, m in _table(raw.get("methods", {}), where + ".methods").items()}
+    for flag in ("record", "entry"):
+        if not isinstance(raw.get(flag, False), bool):
+            raise StubError(f"{where}.{flag}: expected true or false")
+    return ClassModel(qualname, _strings(raw.get("bases", []), where + ".bases"), methods,
+                      raw.get("record", False), raw.get("entry", False),
+                      _strings(raw.get("calls_methods", []), where + ".calls_methods"))
+
+
+def _constant(raw: Any, where: str) -> Value:
+    if isinstance(raw, dict) and "record" in raw:
+        fields = _table(raw.get("fields", {}), where + ".fields")
+        return atoms([Record(str(raw["record"]),
+                             tuple(sorted((k, from_data(v)) for k, v in fields.items())))])
+    if isinstance(raw, dict) and set(raw) == {"value"}:
+        return from_data(raw["value"])
+    raise StubError(f"{where}: expected {{ value = … }} or {{ record = …, fields = {{…}} }}")
+
+
+def load_stub_text(text: str, source: str, model: LibraryModel) -> None:
+    """Merge one stub file into ``model``; problems go to ``model.errors`` (file and key named)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        model.errors.append(f"{source}: not valid TOML: {exc}")
+        return
+    for key in sorted(set(data) - _TOP_KEYS):
+        model.errors.append(f"{source}: unknown top-level key {key!r}")
+    sections = (("functions", _function, model.functions), ("classes", _class, model.classes),
+                ("constants", None, model.constants))
+    for section, reader, target in sections:
+        raw = data.get(section, {})
+        if not isinstance(raw, dict):
+            model.errors.append(f"{source}: [{section}] must be a table")
+            continue
+        for name, entry in raw.items():
+            where = f"{source}: {section}.{name!r}"
+            try:
+                target[name] = reader(name, entry, where) if reader else _constant(entry, where)
+            except StubError as exc:
+                model.errors.append(str(exc))
+    aliases = data.get("aliases", {})
+    if isinstance(aliases, dict):
+        for name, target in aliases.items():
+            if isinstance(target, str):
+                model.aliases[name] = target
+            else:
+                model.errors.append(f"{source}: aliases.{name!r}: expected a string")
+    else:
+        model.errors.append(f"{source}: [aliases] must be a table")
+
+
+def load_library(files: Iterable[tuple[str, str]]) -> LibraryModel:
+    """Load ``(source name, text)`` pairs in order (later files override earlier entries)."""
+    model = LibraryModel()
+    for source, text in files:
+        load_stub_text(text, source, model)
+    return model
+
+
+def read_stub_file(path: Path) -> tuple[str, str]:
+    return path.name, path.read_text(encoding="utf-8")
+
+
+__all__ = ["LibraryModel", "FunctionModel", "ClassModel", "Signature", "Param", "Ref",
+           "ReturnSpec", "EffectSpec", "StoreSpec", "load_library", "from_data",
+           "Const", "ConstType"]

@@ -1,0 +1,254 @@
+"""The value lattice: immutable abstract values for Python expressions.
+
+An abstract :class:`Value` is either ⊤ (:data:`TOP`, "anything") or a finite set of
+*atoms*, each atom one concrete possibility: a constant, a heap object named by its
+allocation site, a function, a class, an external (library) symbol, a tuple/list/dict
+shape.  The empty set is ⊥ (unreachable / not yet known).  Sets are bounded by
+:data:`MAX_ATOMS`; past the bound a value becomes ⊤, which makes every ascending chain
+finite — so joining is already a widening, and loops reach a fixpoint.
+
+Atoms are frozen dataclasses so values hash, compare and can key analysis contexts.
+Nothing here knows about ROS.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable, Iterator, Union
+
+#: Bound on the number of atoms a value may hold before it widens to ⊤.
+MAX_ATOMS = 12
+#: Bound on nesting of containers (a tuple in a list in a dict …) before ⊤.
+MAX_DEPTH = 4
+
+ConstType = Union[str, int, float, bool, None, bytes, complex]
+
+
+@dataclass(frozen=True)
+class Const:
+    """A Python literal. ``kind`` keeps ``1``, ``1.0`` and ``True`` apart (they hash alike)."""
+
+    kind: str
+    value: ConstType
+
+    @staticmethod
+    def of(value: ConstType) -> "Const":
+        return Const(type(value).__name__, value)
+
+
+@dataclass(frozen=True)
+class Obj:
+    """A heap object: instances allocated at one site share one abstract object."""
+
+    site: str   # allocation site key, e.g. "pkg/mod.py:12:8"
+    cls: "Atom"  # ClassAtom or Extern (library class)
+
+
+@dataclass(frozen=True)
+class FuncAtom:
+    """A user function or lambda (``fid`` indexes the program's function table)."""
+
+    fid: int
+
+
+@dataclass(frozen=True)
+class BoundMethod:
+    """A user function bound to a receiver (``self`` or a class for classmethods)."""
+
+    receiver: "Atom"
+    fid: int
+
+
+@dataclass(frozen=True)
+class ClassAtom:
+    """A user class (``cid`` indexes the program's class table)."""
+
+    cid: int
+
+
+@dataclass(frozen=True)
+class ModuleAtom:
+    """A module of the analysed workspace."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class Extern:
+    """A symbol outside the workspace, by qualified name (``rclpy.node.Node``, ``std_msgs.msg.String``)."""
+
+    qualname: str
+
+
+@dataclass(frozen=True)
+class ExternBound:
+    """A library method bound to a receiver: ``qualname`` is the method's ``Class.method``."""
+
+    receiver: "Atom"
+    qualname: str
+
+
+@dataclass(frozen=True)
+class SuperAtom:
+    """``super()`` inside class ``cid`` for receiver ``receiver``."""
+
+    cid: int
+    receiver: "Atom"
+
+
+@dataclass(frozen=True)
+class Seq:
+    """A tuple or list of known length."""
+
+    kind: str  # "tuple" | "list"
+    items: tuple["Value", ...]
+
+
+@dataclass(frozen=True)
+class Coll:
+    """A collection of unknown length whose elements are ``elem`` (comprehensions, ``list.append``)."""
+
+    kind: str
+    elem: "Value"
+
+
+@dataclass(frozen=True)
+class DictAtom:
+    """A dict literal with (key, value) pairs."""
+
+    items: tuple[tuple["Value", "Value"], ...]
+
+
+@dataclass(frozen=True)
+class Record:
+    """A library value described field by field by a stub (e.g. a QoS profile)."""
+
+    qualname: str
+    fields: tuple[tuple[str, "Value"], ...]
+
+    def field(self, name: str) -> "Value | None":
+        for key, val in self.fields:
+            if key == name:
+                return val
+        return None
+
+
+Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, ExternBound,
+             SuperAtom, Seq, Coll, DictAtom, Record]
+
+
+class Value:
+    """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
+
+    __slots__ = ("atoms", "_hash")
+
+    def __init__(self, items: frozenset | None) -> None:
+        # ``None`` means ⊤.
+        self.atoms = items
+        self._hash = hash(items)
+
+    @property
+    def is_top(self) -> bool:
+        return self.atoms is None
+
+    @property
+    def is_bottom(self) -> bool:
+        return self.atoms is not None and not self.atoms
+
+    def __iter__(self) -> Iterator[Atom]:
+        return iter(()) if self.atoms is None else iter(self.atoms)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Value) and self.atoms == other.atoms
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __repr__(self) -> str:
+        if self.atoms is None:
+            return "⊤"
+        return "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
+
+    # -- lattice operations ------------------------------------------------
+    def join(self, other: "Value") -> "Value":
+        if self.atoms is None or other.atoms is None:
+            return TOP
+        if other.atoms <= self.atoms:
+            return self
+        if self.atoms <= other.atoms:
+            return other
+        return _bounded(self.atoms | other.atoms)
+
+    def leq(self, other: "Value") -> bool:
+        if other.atoms is None:
+            return True
+        if self.atoms is None:
+            return False
+        return self.atoms <= other.atoms
+
+    def widen(self, other: "Value") -> "Value":
+        """Widening: any growth at a loop head jumps straight to ⊤."""
+        joined = self.join(other)
+        return self if joined == self else TOP
+
+    # -- views -----------------------------------------------------------------
+    def consts(self) -> list[ConstType] | None:
+        """The constants, if every atom is a constant; else ``None``."""
+        if self.atoms is None:
+            return None
+        out = []
+        for atom in self.atoms:
+            if not isinstance(atom, Const):
+                return None
+            out.append(atom.value)
+        return out
+
+    def strings(self) -> list[str] | None:
+        vals = self.consts()
+        if vals is None or not all(isinstance(v, str) for v in vals):
+            return None
+        return sorted(vals)
+
+
+TOP = Value(None)
+BOTTOM = Value(frozenset())
+
+
+def _depth(atom: Atom) -> int:
+    if isinstance(atom, Seq):
+        return 1 + max((_value_depth(v) for v in atom.items), default=0)
+    if isinstance(atom, Coll):
+        return 1 + _value_depth(atom.elem)
+    if isinstance(atom, DictAtom):
+        return 1 + max((max(_value_depth(k), _value_depth(v)) for k, v in atom.items), default=0)
+    return 0
+
+
+def _value_depth(value: Value) -> int:
+    return max((_depth(a) for a in value), default=0)
+
+
+def _bounded(items: frozenset) -> Value:
+    if len(items) > MAX_ATOMS:
+        return TOP
+    return Value(items)
+
+
+def atoms(items: Iterable[Atom]) -> Value:
+    """The value holding exactly ``items`` (⊤ past the bounds)."""
+    items = frozenset(items)
+    if any(_depth(a) > MAX_DEPTH for a in items):
+        return TOP
+    return _bounded(items)
+
+
+def const(value: ConstType) -> Value:
+    return Value(frozenset((Const.of(value),)))
+
+
+def join_all(values: Iterable[Value]) -> Value:
+    out = BOTTOM
+    for v in values:
+        out = out.join(v)
+        if out.is_top:
+            return out
+    return out

@@ -1,0 +1,66 @@
+"""One call from a workspace folder to its ROS graph: read, analyse, build.
+
+``build_graph`` is the single entry point used by the CLI, the flake8 plugin and
+the tests.  It never raises: unreadable files, broken stubs, budget exhaustion and
+even internal errors become diagnostics on the returned graph.
+"""
+from __future__ import annotations
+
+import traceback
+from importlib.resources import files
+from pathlib import Path
+from typing import Sequence
+
+from .absint.engine import Analysis
+from .absint.library import LibraryModel, load_library
+from .absint.program import Program
+from .graph.builder import build_graph_from
+from .graph.model import Diagnostic, RosGraph
+from .workspace import load_workspace
+
+
+def builtin_stub_texts() -> list[tuple[str, str]]:
+    """The stub files shipped in the package, as ``(name, text)``, in name order."""
+    folder = files("flake8_rosgraph.stubs")
+    return [(entry.name, entry.read_text(encoding="utf-8"))
+            for entry in sorted(folder.iterdir(), key=lambda e: e.name)
+            if entry.name.endswith(".toml")]
+
+
+def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diagnostic]]:
+    texts = builtin_stub_texts()
+    diagnostics: list[Diagnostic] = []
+    for path in stub_files:
+        try:
+            texts.append((str(path), Path(path).read_text(encoding="utf-8")))
+        except (OSError, UnicodeDecodeError) as exc:
+            diagnostics.append(Diagnostic(str(path), 1, f"cannot read stub file: {exc}", "error"))
+    library = load_library(texts)
+    diagnostics.extend(Diagnostic(err.split(":", 1)[0], 1, "stub: " + err, "error")
+                       for err in library.errors)
+    return library, diagnostics
+
+
+def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
+    """The ROS computation graph of the Python code under ``root``; never raises."""
+    root = Path(root)
+    diagnostics: list[Diagnostic] = []
+    try:
+        library, stub_diags = load_stubs(stub_files)
+        diagnostics.extend(stub_diags)
+        workspace = load_workspace(root)
+        diagnostics.extend(workspace.diagnostics)
+        program = Program(workspace.modules)
+        diagnostics.extend(Diagnostic(m.path, 1, why) for m, why in program.rejected)
+        analysis = Analysis(program, library)
+        analysis.run()
+        diagnostics.extend(Diagnostic(d.path, d.line, d.message) for d in analysis.diagnostics)
+        graph = build_graph_from(analysis)
+    except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
+        where = traceback.extract_tb(exc.__traceback__)[-1]
+        diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "
+                                              f"(at {Path(where.filename).name}:{where.lineno})",
+                                      "error"))
+        graph = RosGraph()
+    graph.diagnostics = sorted(set(diagnostics))
+    return graph

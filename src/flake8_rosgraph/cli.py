@@ -1,0 +1,61 @@
+"""Command line: ``flake8-rosgraph graph PATH`` (and ``python -m flake8_rosgraph``).
+
+Exit status: 0 success, 2 usage or internal error.  Diagnostics go to stderr, one per
+line, and into the JSON output's ``diagnostics`` list.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from . import __version__
+
+
+def _graph(args: argparse.Namespace) -> int:
+    from .analysis import build_graph
+    from .graph.dot import to_dot
+    from .graph.json_out import to_json
+
+    root = Path(args.path)
+    if not root.exists():
+        print(f"flake8-rosgraph: error: no such file or directory: {args.path}", file=sys.stderr)
+        return 2
+    graph = build_graph(root, [Path(s) for s in args.stubs])
+    for diag in graph.diagnostics:
+        where = f"{diag.path}:{diag.line}: " if diag.path else ""
+        print(f"{where}{diag.severity}: {diag.message}", file=sys.stderr)
+    text = to_json(graph) if args.format == "json" else to_dot(graph)
+    if args.output:
+        Path(args.output).write_text(text, encoding="utf-8")
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+def make_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="flake8-rosgraph",
+                                     description="Static ROS 2 computation graph of rclpy code.")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+    graph = sub.add_parser("graph", help="print the ROS computation graph of PATH")
+    graph.add_argument("path", help="workspace folder (or a single file)")
+    graph.add_argument("--format", choices=("json", "dot"), default="json")
+    graph.add_argument("--output", "-o", help="write to this file instead of stdout")
+    graph.add_argument("--stubs", action="append", default=[], metavar="FILE",
+                       help="extra library model (TOML); repeatable")
+    graph.set_defaults(run=_graph)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = make_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0) and 2
+    try:
+        return args.run(args)
+    except Exception as exc:  # one clear line, never a traceback
+        print(f"flake8-rosgraph: internal error: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return 2

@@ -1,0 +1,302 @@
+"""From analysis effects to the ROS computation graph.
+
+This is where ROS meaning enters: the analyser reports opaque effects declared by
+the stubs ("node", "publisher", "timer", …) with abstract argument values; here
+they become nodes and entities.  A node is one creation site × one possible
+(name, namespace); an entity attaches to every node its ``node`` argument may be.
+Names are expanded and validated with rcl's rules (:mod:`.names`); a value the
+analysis could not pin down becomes ``None`` ("unknown"), and a value with several
+possibilities yields one entity per possibility.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any, Iterable
+
+from ..absint.engine import Analysis, Effect
+from ..absint.values import (BoundMethod, Const, Extern, ExternBound, FuncAtom, Obj, Record, Seq,
+                             Coll, Value)
+from . import names
+from .model import Entity, Location, RosGraph, RosNode
+
+#: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
+ENTITY_KINDS: dict[str, tuple[str, str]] = {
+    "publisher": ("publishers", "topic"),
+    "subscription": ("subscriptions", "topic"),
+    "service": ("services", "name"),
+    "client": ("clients", "name"),
+    "action_server": ("action_servers", "name"),
+    "action_client": ("action_clients", "name"),
+}
+_INTERFACE = re.compile(r"^([A-Za-z_][\w]*)\.(msg|srv|action)(?:\.[\w.]*)?\.([A-Za-z_]\w*)$")
+_POLICY_PREFIX = re.compile(r"^(RMW_QOS_POLICY_[A-Z]+_)")
+QOS_POLICIES = ("history", "reliability", "durability", "liveliness")
+QOS_NUMBERS = ("depth",)
+QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
+
+
+def interface_type(value: Value) -> str | None:
+    """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``"std_msgs/msg/String"``."""
+    found = set()
+    for atom in value:
+        if isinstance(atom, Extern):
+            match = _INTERFACE.match(atom.qualname)
+            if match:
+                found.add(f"{match.group(1)}/{match.group(2)}/{match.group(3)}")
+                continue
+        if isinstance(atom, Const) and isinstance(atom.value, str) and atom.value.count("/") == 2:
+            found.add(atom.value)
+            continue
+        return None
+    return found.pop() if len(found) == 1 else None
+
+
+def _policy(value: Value | None) -> str | None:
+    if value is None:
+        return None
+    out = set()
+    for atom in value:
+        if isinstance(atom, Const) and isinstance(atom.value, str):
+            out.add(atom.value.lower())
+        elif isinstance(atom, Extern):
+            last = atom.qualname.rsplit(".", 1)[-1]
+            out.add(_POLICY_PREFIX.sub("", last).lower())
+        else:
+            return None
+    return out.pop() if len(out) == 1 else None
+
+
+def _number(value: Value | None) -> float | int | None:
+    consts = value.consts() if value is not None else None
+    if not consts or len(consts) != 1 or isinstance(consts[0], bool) \
+            or not isinstance(consts[0], (int, float)):
+        return None
+    return consts[0]
+
+
+def qos_of(value: Value) -> dict[str, Any] | None:
+    """A QoS argument as a dict of the policies known statically (``None``: nothing known)."""
+    atoms_ = list(value)
+    if value.is_top or len(atoms_) != 1:
+        return None
+    atom = atoms_[0]
+    if isinstance(atom, Const) and isinstance(atom.value, int) and not isinstance(atom.value, bool):
+        return {"depth": atom.value}
+    if not isinstance(atom, Record):
+        return None
+    out: dict[str, Any] = {}
+    for key in QOS_POLICIES:
+        policy = _policy(atom.field(key))
+        if policy is not None:
+            out[key] = policy
+    for key in QOS_NUMBERS + QOS_DURATIONS:
+        number = _number(atom.field(key))
+        if number is not None:
+            out[key] = number
+    profile = atom.field("profile")
+    if profile is not None and profile.strings() and len(profile.strings()) == 1:
+        out["profile"] = profile.strings()[0]
+    return out
+
+
+def json_value(value: Value) -> Any:
+    """A parameter default as JSON (``None`` when not a single known constant/list)."""
+    atoms_ = list(value)
+    if value.is_top or len(atoms_) != 1:
+        return None
+    atom = atoms_[0]
+    if isinstance(atom, Const) and isinstance(atom.value, (str, int, float, bool)):
+        return atom.value
+    if isinstance(atom, Seq):
+        items = [json_value(v) for v in atom.items]
+        return None if any(i is None for i in items) else items
+    return None
+
+
+def _choices(value: Value) -> list[str | None]:
+    """Every possible string, or ``[None]`` when the value is not a known set of strings."""
+    strings = value.strings()
+    return list(strings) if strings else [None]
+
+
+@dataclass
+class _NodeSite:
+    node: RosNode
+    allow_undeclared: bool
+
+
+class GraphBuilder:
+    def __init__(self, analysis: Analysis) -> None:
+        self.analysis = analysis
+        self.program = analysis.program
+        self.nodes: dict[tuple, _NodeSite] = {}
+        self.by_object: dict[str, list[_NodeSite]] = {}
+
+    def build(self) -> RosGraph:
+        effects = self.analysis.all_effects()
+        for eff in effects:
+            if eff.kind == "node":
+                self._add_node(eff)
+        entities: dict[int, dict[tuple, Entity]] = {}
+        for eff in effects:
+            for site in self._owners(eff):
+                bucket = entities.setdefault(id(site.node), {})
+                for entity in self._entities(eff, site.node):
+                    bucket.setdefault(_entity_order(entity), entity)
+        graph = RosGraph()
+        for site in self.nodes.values():
+            bucket = entities.get(id(site.node), {})
+            site.node.entities = [bucket[k] for k in sorted(bucket)]
+            graph.nodes.append(site.node)
+        graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
+        return graph
+
+    # -- nodes ------------------------------------------------------------------------------
+    def _add_node(self, eff: Effect) -> None:
+        location = Location(eff.path, eff.line, eff.column)
+        namespaces = eff.arg("namespace")
+        ns_choices: Iterable[str | None]
+        if namespaces.consts() == [None]:
+            ns_choices = ["/"]
+        else:
+            ns_choices = [None if ns is None else names.normalize_namespace(ns)
+                          for ns in _choices(namespaces)]
+        allow = eff.arg("allow_undeclared").consts() != [False]
+        for obj in eff.arg("target"):
+            if not isinstance(obj, Obj):
+                continue
+            for name in _choices(eff.arg("name")):
+                for ns in ns_choices:
+                    key = (location, name, ns)
+                    site = self.nodes.get(key)
+                    if site is None:
+                        node = RosNode(name, ns, location, _class_name(self.program, obj),
+                                       conditional=eff.conditional,
+                                       invalid=_node_problem(name, ns))
+                        site = self.nodes[key] = _NodeSite(node, allow)
+                    sites = self.by_object.setdefault(obj.site, [])
+                    if site not in sites:
+                        sites.append(site)
+
+    def _owners(self, eff: Effect) -> list[_NodeSite]:
+        if eff.kind == "node":
+            return []
+        out: list[_NodeSite] = []
+        for obj in eff.arg("node"):
+            if isinstance(obj, Obj):
+                out.extend(s for s in self.by_object.get(obj.site, ()) if s not in out)
+        return out
+
+    # -- entities ---------------------------------------------------------------------------
+    def _entities(self, eff: Effect, node: RosNode) -> list[Entity]:
+        location = Location(eff.path, eff.line, eff.column)
+        common = dict(location=location, conditional=eff.conditional)
+        if eff.kind in ENTITY_KINDS:
+            kind, name_arg = ENTITY_KINDS[eff.kind]
+            type_ = interface_type(eff.arg("type"))
+            qos = qos_of(eff.arg("qos")) if kind in ("publishers", "subscriptions") else None
+            callback = self.callback_name(eff.arg("callback")) if "callback" in dict(eff.args) \
+                else None
+            via = eff.arg("via").strings()
+            out = []
+            for raw in _choices(eff.arg(name_arg)):
+                name, problem = self._resolve(raw, node)
+                out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
+                                  callback=callback, invalid=problem,
+                                  via=via[0] if via else None, **common))
+            return out
+        if eff.kind == "timer":
+            callback = self.callback_name(eff.arg("callback"))
+            periods = eff.arg("period").consts()
+            if not periods or not all(isinstance(p, (int, float)) and not isinstance(p, bool)
+                                      for p in periods):
+                periods = [None]
+            return [Entity("timers", None, period=None if p is None else float(p),
+                           callback=callback, **common) for p in periods]
+        if eff.kind == "parameter":
+            default = json_value(eff.arg("default"))
+            return [Entity("parameters", n, raw_name=n, default=default,
+                           invalid=_param_problem(n), **common)
+                    for n in _choices(eff.arg("name"))]
+        if eff.kind == "parameters":
+            return self._declared_parameters(eff, common)
+        return []
+
+    def _declared_parameters(self, eff: Effect, common: dict) -> list[Entity]:
+        prefixes = _choices(eff.arg("namespace"))
+        out: list[Entity] = []
+        for atom in eff.arg("parameters"):
+            items = atom.items if isinstance(atom, Seq) else \
+                (atom.elem,) if isinstance(atom, Coll) else ()
+            for item in items:
+                for entry in item:
+                    if not isinstance(entry, Seq) or not entry.items:
+                        continue
+                    default = json_value(entry.items[1]) if len(entry.items) > 1 else None
+                    for name in _choices(entry.items[0]):
+                        for prefix in prefixes:
+                            full = None if name is None or prefix is None else \
+                                (f"{prefix}.{name}" if prefix else name)
+                            out.append(Entity("parameters", full, raw_name=full, default=default,
+                                              invalid=_param_problem(full), **common))
+        return out
+
+    def _resolve(self, raw: str | None, node: RosNode) -> tuple[str | None, str | None]:
+        if raw is None:
+            return None, None
+        if node.name is None or node.namespace is None:
+            if raw.startswith("/"):
+                check = names.validate_full_topic_name(raw)
+                return raw, None if check.ok else check.reason
+            return None, None
+        expanded, check = names.expand_topic_name(raw, node.name, node.namespace)
+        if expanded is None:
+            return raw, check.reason
+        return expanded, None if check.ok else check.reason
+
+    def callback_name(self, value: Value) -> str | None:
+        found = []
+        for atom in value:
+            if isinstance(atom, (FuncAtom, BoundMethod)):
+                found.append(self.program.functions[atom.fid].qualname)
+            elif isinstance(atom, ExternBound):
+                found.append(".".join(atom.qualname.split(".")[-2:]))
+        return sorted(found)[0] if found else None
+
+
+def _class_name(program, obj: Obj) -> str | None:
+    from ..absint.values import ClassAtom
+    if isinstance(obj.cls, ClassAtom):
+        return program.classes[obj.cls.cid].qualname
+    return None
+
+
+def _node_problem(name: str | None, ns: str | None) -> str | None:
+    if name is not None:
+        check = names.validate_node_name(name)
+        if not check.ok:
+            return f"node name '{name}' {check.reason}"
+    if ns is not None:
+        check = names.validate_namespace(ns)
+        if not check.ok:
+            return f"namespace '{ns}' {check.reason}"
+    return None
+
+
+def _param_problem(name: str | None) -> str | None:
+    if name is None:
+        return None
+    check = names.validate_parameter_name(name)
+    return None if check.ok else check.reason
+
+
+def _entity_order(e: Entity) -> tuple:
+    """Sort key that is also the identity of an entity on its node."""
+    return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
+            e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
+            e.invalid or "", e.via or "")
+
+
+def build_graph_from(analysis: Analysis) -> RosGraph:
+    return GraphBuilder(analysis).build()

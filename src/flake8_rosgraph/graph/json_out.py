@@ -1,0 +1,68 @@
+"""The graph as JSON, per the public contract ``rosgraph/1`` (docs: graph-json.md).
+
+Key order and list order are fixed, so the same graph always serialises to the
+same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``diagnostics``)
+are additions the contract allows; consumers ignore what they do not know.
+"""
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from .model import KINDS, Entity, RosGraph, RosNode
+
+SCHEMA = "rosgraph/1"
+
+
+def _entity(e: Entity) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    if e.kind in ("publishers", "subscriptions"):
+        out["topic"] = e.name
+    elif e.kind == "timers":
+        out["period"] = e.period
+    else:
+        out["name"] = e.name
+    if e.kind not in ("timers", "parameters"):
+        out["type"] = e.type
+    if e.kind in ("publishers", "subscriptions"):
+        out["qos"] = e.qos if e.qos is not None else {}
+    if e.kind in ("subscriptions", "services", "action_servers", "timers"):
+        out["callback"] = e.callback
+    if e.kind == "parameters":
+        out["default"] = e.default
+    out.update(path=e.location.path, line=e.location.line, column=e.location.column)
+    if e.conditional:
+        out["conditional"] = True
+    if e.invalid:
+        out["invalid"] = e.invalid
+    if e.via:
+        out["via"] = e.via
+    return out
+
+
+def _node(n: RosNode) -> dict[str, Any]:
+    out: dict[str, Any] = {
+        "name": n.name, "namespace": n.namespace, "fqn": n.fqn,
+        "path": n.location.path, "line": n.location.line, "column": n.location.column,
+        "class": n.cls,
+    }
+    for kind in KINDS:
+        out[kind] = [_entity(e) for e in n.entities if e.kind == kind]
+    if n.conditional:
+        out["conditional"] = True
+    if n.invalid:
+        out["invalid"] = n.invalid
+    return out
+
+
+def to_json_obj(graph: RosGraph) -> dict[str, Any]:
+    return {
+        "schema": SCHEMA,
+        "nodes": [_node(n) for n in graph.nodes],
+        "diagnostics": [{"path": d.path, "line": d.line, "severity": d.severity,
+                         "message": d.message} for d in sorted(graph.diagnostics)],
+    }
+
+
+def to_json(graph: RosGraph) -> str:
+    return json.dumps(to_json_obj(graph), indent=1, ensure_ascii=False) + "\n"

@@ -1,0 +1,107 @@
+"""The extracted ROS computation graph: plain data, no analysis.
+
+Everything downstream (rules, JSON/DOT/SARIF writers, the flake8 adapter) reads
+these classes and nothing else, so they stay small, immutable where it is cheap,
+and free of any knowledge of how they were found.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+#: The entity kinds in the order of the graph JSON contract.
+KINDS: tuple[str, ...] = (
+    "publishers", "subscriptions", "services", "clients",
+    "action_servers", "action_clients", "timers", "parameters",
+)
+#: Kinds whose entities carry a resolved ROS name (topic, service or action).
+NAMED_KINDS: tuple[str, ...] = KINDS[:6]
+#: For each named kind, the kind at the other end of the connection.
+PEER_KIND: dict[str, str] = {
+    "publishers": "subscriptions", "subscriptions": "publishers",
+    "services": "clients", "clients": "services",
+    "action_servers": "action_clients", "action_clients": "action_servers",
+}
+
+
+@dataclass(frozen=True, order=True)
+class Location:
+    """A place in the analysed workspace: root-relative POSIX path, 1-based line and character column."""
+
+    path: str
+    line: int
+    column: int
+
+    def short(self) -> str:
+        return f"{self.path}:{self.line}"
+
+
+@dataclass(frozen=True)
+class Entity:
+    """A publisher, subscription, service, client, action server/client, timer or parameter.
+
+    ``name`` is the fully resolved ROS name (``None`` when the analysis cannot tell);
+    ``raw_name`` is the name as written in code before expansion. For timers
+    ``name`` is ``None`` and ``period`` holds the period; for parameters ``name``
+    is the parameter name and ``default`` its default value.
+    """
+
+    kind: str
+    name: str | None
+    location: Location
+    raw_name: str | None = None
+    type: str | None = None
+    qos: dict[str, Any] | None = None
+    callback: str | None = None
+    period: float | None = None
+    default: Any = None
+    conditional: bool = False
+    invalid: str | None = None  # why the name breaks the rcl rules, if it does
+    via: str | None = None      # library class that implies this entity (tf2_ros, parameter client)
+
+
+@dataclass
+class RosNode:
+    """A ROS node the code can create, with the entities created on it."""
+
+    name: str | None
+    namespace: str | None
+    location: Location
+    cls: str | None = None
+    conditional: bool = False
+    invalid: str | None = None
+    entities: list[Entity] = field(default_factory=list)
+
+    @property
+    def fqn(self) -> str | None:
+        if self.name is None or self.namespace is None:
+            return None
+        return self.namespace.rstrip("/") + "/" + self.name
+
+    def of_kind(self, kind: str) -> list[Entity]:
+        return [e for e in self.entities if e.kind == kind]
+
+
+@dataclass(frozen=True, order=True)
+class Diagnostic:
+    """A gap in the analysis (unparsable file, budget hit, broken stub) — never a finding."""
+
+    path: str
+    line: int
+    message: str
+    severity: str = "warning"
+
+
+@dataclass
+class RosGraph:
+    """The whole-workspace graph: nodes plus the diagnostics gathered while building it."""
+
+    nodes: list[RosNode] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def entities(self, kind: str | None = None):
+        """Yield ``(node, entity)`` pairs, optionally of one kind."""
+        for node in self.nodes:
+            for ent in node.entities:
+                if kind is None or ent.kind == kind:
+                    yield node, ent

@@ -1,0 +1,113 @@
+"""Finding and reading the Python files of a workspace, robustly.
+
+Walks the tree (no symlink following, so loops cannot trap it), skips build
+products and hidden/virtual-env folders, names each file as the module Python
+would import it as (walking up through ``__init__.py`` packages), and parses it.
+A file that cannot be read, decoded or parsed becomes a :class:`Diagnostic` and
+is left out; everything else is still analysed.
+"""
+from __future__ import annotations
+
+import ast
+import io
+import os
+import tokenize
+from dataclasses import dataclass
+from pathlib import Path
+
+from .absint.program import Module
+from .graph.model import Diagnostic
+
+#: Folders never analysed: VCS data, colcon build products, caches, virtual envs.
+SKIP_DIRS = frozenset({
+    ".git", ".hg", ".svn", "build", "install", "log", "__pycache__", ".tox", ".nox",
+    ".venv", "venv", "node_modules", ".mypy_cache", ".pytest_cache", ".rosgraph-cache",
+    "site-packages", ".eggs",
+})
+#: Files larger than this are not analysed (a generated file, not a node).
+MAX_FILE_BYTES = 4 * 1024 * 1024
+
+
+@dataclass
+class Workspace:
+    root: Path
+    modules: list[Module]
+    diagnostics: list[Diagnostic]
+
+
+def python_files(root: Path) -> list[Path]:
+    """All ``*.py`` files under ``root`` (or ``root`` itself), sorted, build folders skipped."""
+    if root.is_file():
+        return [root]
+    found: list[Path] = []
+    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=None):
+        dirnames[:] = sorted(d for d in dirnames
+                             if d not in SKIP_DIRS and not d.startswith(".")
+                             and not d.endswith(".egg-info"))
+        for name in sorted(filenames):
+            if name.endswith(".py"):
+                found.append(Path(dirpath) / name)
+    return sorted(found)
+
+
+def module_name(path: Path, root: Path) -> tuple[str, bool]:
+    """Dotted import name of ``path`` (packages found by ``__init__.py``), and whether it is a package."""
+    is_package = path.name == "__init__.py"
+    parts = [] if is_package else [path.stem]
+    folder = path.parent
+    while (folder / "__init__.py").is_file() and folder != folder.parent:
+        parts.insert(0, folder.name)
+        if folder == root:
+            break
+        folder = folder.parent
+    return ".".join(parts) or path.stem, is_package
+
+
+def relative(path: Path, root: Path) -> str:
+    base = root if root.is_dir() else root.parent
+    try:
+        return path.relative_to(base).as_posix()
+    except ValueError:
+        return path.name
+
+
+def read_module(path: Path, root: Path) -> Module | Diagnostic:
+    rel = relative(path, root)
+    try:
+        if path.stat().st_size > MAX_FILE_BYTES:
+            return Diagnostic(rel, 1, f"skipped: larger than {MAX_FILE_BYTES // (1024 * 1024)} MiB")
+        data = path.read_bytes()
+    except OSError as exc:
+        return Diagnostic(rel, 1, f"cannot read file: {exc.strerror or exc}")
+    try:
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+        text = data.decode(encoding)
+    except (SyntaxError, LookupError, UnicodeDecodeError) as exc:
+        return Diagnostic(rel, 1, f"cannot decode file: {exc}")
+    try:
+        tree = ast.parse(data, filename=rel)
+    except SyntaxError as exc:
+        return Diagnostic(rel, exc.lineno or 1, f"syntax error: {exc.msg}")
+    except (ValueError, RecursionError, MemoryError, OverflowError) as exc:
+        return Diagnostic(rel, 1, f"cannot parse file: {type(exc).__name__}: {exc}"[:200])
+    name, is_package = module_name(path, root if root.is_dir() else root.parent)
+    return Module(name, rel, tree, text.splitlines(), is_package)
+
+
+def load_workspace(root: Path) -> Workspace:
+    """Read every Python file under ``root``; unique module names (duplicates get a path-based one)."""
+    modules: list[Module] = []
+    diagnostics: list[Diagnostic] = []
+    names: set[str] = set()
+    for path in python_files(root):
+        result = read_module(path, root)
+        if isinstance(result, Diagnostic):
+            diagnostics.append(result)
+            continue
+        if result.name in names:
+            # Two files claim one import name (e.g. same-named scripts in two packages):
+            # keep both analysed; imports resolve to the first.
+            result.name = "<file>" + result.path
+        names.add(result.name)
+        modules.append(result)
+    return Workspace(root, modules, diagnostics)
