@@ -919,8 +919,10 @@ class Interpreter:
     def call_extern(self, qualname: str, args: "Args", node) -> Value:
         if qualname.startswith("builtins."):
             return self.call_builtin(qualname[len("builtins."):], args, node)
-        fn = self.lib.functions.get(qualname)
-        if fn is not None:
+        owner, _, method = qualname.rpartition(".")
+        fn = self.lib.functions.get(qualname) or (
+            self.lib.method(owner, method) if owner in self.lib.classes else None)
+        if fn is not None:  # a function, or a method called on the class (self passed explicitly)
             return self.apply_model(fn, None, args, node)
         if qualname in self.lib.classes:
             if self.lib.class_flag(qualname, "record"):
