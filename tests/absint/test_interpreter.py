@@ -1,0 +1,195 @@
+"""Abstract interpretation of plain Python: values, heap, calls, termination (no ROS here)."""
+from flake8_rosgraph.absint.values import TOP
+
+
+def test_string_building_folds_to_constants(analyse):
+    a = analyse({"m.py": """
+        base = 'robot'
+        idx = 2
+        plus = base + '_' + str(idx)
+        percent = '%s/%d' % (base, idx)
+        fmt = '{}/{n}'.format(base, n=idx)
+        fstr = f'{base}/{idx:03d}'
+        joined = '/'.join([base, 'cmd'])
+        upper = base.upper()
+    """})
+    assert a.strings("m", "plus") == ["robot_2"]
+    assert a.strings("m", "percent") == ["robot/2"]
+    assert a.strings("m", "fmt") == ["robot/2"]
+    assert a.strings("m", "fstr") == ["robot/002"]
+    assert a.strings("m", "joined") == ["robot/cmd"]
+    assert a.strings("m", "upper") == ["ROBOT"]
+
+
+def test_branches_give_a_set_of_values(analyse):
+    a = analyse({"m.py": """
+        import sys
+        flag = len(sys.argv) > 1
+        name = 'left' if flag else 'right'
+        if flag:
+            other = 'a'
+        else:
+            other = 'b'
+        unknown = sys.argv[1]
+    """})
+    assert a.strings("m", "name") == ["left", "right"]
+    assert a.strings("m", "other") == ["a", "b"]
+    assert a.value("m", "unknown").is_top
+
+
+def test_constant_conditions_prune_branches(analyse):
+    a = analyse({"m.py": """
+        DEBUG = False
+        if DEBUG:
+            mode = 'debug'
+        else:
+            mode = 'release'
+    """})
+    assert a.strings("m", "mode") == ["release"]
+
+
+def test_growing_loop_value_widens_and_terminates(analyse):
+    a = analyse({"m.py": """
+        s = 'a'
+        while True:
+            s = s + 'a'
+            if len(s) > 1000:
+                break
+        n = 0
+        for i in range(10 ** 6):
+            n = n + 1
+    """})
+    assert a.value("m", "s").is_top
+    assert a.value("m", "n").is_top
+
+
+def test_fields_written_in_one_method_are_read_in_another(analyse):
+    a = analyse({"m.py": """
+        class Box:
+            PREFIX = 'box'
+            def __init__(self, name):
+                self.name = self.PREFIX + '/' + name
+            def get(self):
+                return self.name
+        result = Box('one').get()
+    """})
+    assert a.strings("m", "result") == ["box/one"]
+
+
+def test_inheritance_and_super_across_modules(analyse):
+    a = analyse({
+        "pkg/__init__.py": "from .base import Base\n",
+        "pkg/base.py": """
+            class Base:
+                def __init__(self, topic):
+                    self.topic = 'base/' + topic
+                def describe(self):
+                    return self.topic
+        """,
+        "pkg/child.py": """
+            from pkg import Base
+            class Child(Base):
+                def __init__(self):
+                    super().__init__('child')
+            class Legacy(Base):
+                def __init__(self):
+                    super(Legacy, self).__init__('legacy')
+            child = Child().describe()
+            legacy = Legacy().describe()
+        """})
+    assert a.strings("pkg.child", "child") == ["base/child"]
+    assert a.strings("pkg.child", "legacy") == ["base/legacy"]
+
+
+def test_constants_imported_from_other_modules(analyse):
+    a = analyse({
+        "pkg/__init__.py": "",
+        "pkg/names.py": "TOPIC = 'cmd_vel'\nNS = 'robot'\n",
+        "pkg/use.py": """
+            from . import names
+            from .names import TOPIC as T
+            import pkg.names as pn
+            full = pn.NS + '/' + T + '/' + names.TOPIC
+        """})
+    assert a.strings("pkg.use", "full") == ["robot/cmd_vel/cmd_vel"]
+
+
+def test_calls_are_context_sensitive(analyse):
+    a = analyse({"m.py": """
+        def prefixed(name):
+            return '/ns/' + name
+        first = prefixed('a')
+        second = prefixed('b')
+    """})
+    assert a.strings("m", "first") == ["/ns/a"]
+    assert a.strings("m", "second") == ["/ns/b"]
+
+
+def test_closures_and_lambdas(analyse):
+    a = analyse({"m.py": """
+        def outer():
+            suffix = 'x'
+            def inner(v):
+                return v + suffix
+            return inner('a'), (lambda: suffix * 2)()
+        pair = outer()
+        first, second = pair
+    """})
+    assert a.strings("m", "first") == ["ax"]
+    assert a.strings("m", "second") == ["xx"]
+
+
+def test_recursion_terminates(analyse):
+    a = analyse({"m.py": """
+        def down(n):
+            if n <= 0:
+                return 'done'
+            return down(n - 1)
+        def ping(x):
+            return pong(x + 'i')
+        def pong(x):
+            return ping(x + 'o')
+        result = down(3)
+        endless = ping('')
+    """})
+    assert a.strings("m", "result") == ["done"]
+    assert not a.value("m", "endless").strings()
+
+
+def test_containers_iterate_to_their_elements(analyse):
+    a = analyse({"m.py": """
+        topics = {'left': 'cam/left', 'right': 'cam/right'}
+        names = []
+        for key, value in topics.items():
+            last = value
+        for t in ('a', 'b'):
+            loop_var = t
+        firsts = [p for p in ['x', 'y']]
+        picked = topics['left']
+    """})
+    assert a.strings("m", "last") == ["cam/left", "cam/right"]
+    assert a.strings("m", "loop_var") == ["a", "b"]
+    assert a.strings("m", "picked") == ["cam/left"]
+
+
+def test_argparse_defaults_flow_to_attributes(analyse):
+    a = analyse({"m.py": """
+        import argparse
+        parser = argparse.ArgumentParser()
+        parser.add_argument('--topic-name', default='scan')
+        parser.add_argument('robot', nargs='?', default='r1')
+        args = parser.parse_args()
+        topic = args.robot + '/' + args.topic_name
+    """})
+    assert a.strings("m", "topic") == ["r1/scan"]
+
+
+def test_unknown_library_values_stay_unknown(analyse):
+    a = analyse({"m.py": """
+        import os
+        import somelib
+        name = os.environ['ROBOT']
+        value = somelib.compute('x')
+    """})
+    assert a.value("m", "name") == TOP
+    assert a.value("m", "value") == TOP
