@@ -1,0 +1,1 @@
+"""Applications of the example robot: teleop, dashboard, Fibonacci actions."""

@@ -1,0 +1,1 @@
+"""Building blocks shared by the robot packages of the example workspace."""

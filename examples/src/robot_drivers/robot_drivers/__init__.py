@@ -1,0 +1,1 @@
+"""Drivers of the example robot, built on robot_base."""

@@ -1,0 +1,21 @@
+from setuptools import setup
+
+package_name = 'sensor_pkg'
+
+setup(
+    name=package_name,
+    version='0.0.1',
+    packages=[package_name],
+    data_files=[
+        ('share/ament_index/resource_index/packages',
+         ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+    ],
+    install_requires=['setuptools'],
+    entry_points={
+        'console_scripts': [
+            'imu_node = sensor_pkg.imu_node:main',
+            'logger_node = sensor_pkg.logger_node:main',
+        ],
+    },
+)
