@@ -37,7 +37,8 @@ def analyse(tmp_path: Path):
             path.write_text(textwrap.dedent(text))
         library, diags = load_stubs()
         assert not diags
-        analysis = Analysis(Program(load_workspace(tmp_path).modules), library)
+        analysis = Analysis(Program(load_workspace(tmp_path).modules), library,
+                            every_module_is_entry=True)
         analysis.run()
         return Analysed(analysis)
     return run

@@ -66,7 +66,8 @@ class Diagnostic:
 class Analysis:
     """Runs the whole-program fixpoint and keeps its results (heap, effects, diagnostics)."""
 
-    def __init__(self, program: Program, library: LibraryModel, max_task_runs: int | None = None):
+    def __init__(self, program: Program, library: LibraryModel, max_task_runs: int | None = None,
+                 every_module_is_entry: bool = False):
         self.program = program
         self.library = library
         self.heap: dict[Hashable, Value] = {}
@@ -83,10 +84,14 @@ class Analysis:
         size = len(program.functions) + len(program.modules)
         self.max_task_runs = max_task_runs if max_task_runs is not None else 200 + 60 * size
         self.task_runs = 0
+        self.every_module_is_entry = every_module_is_entry
+        self.relevant: set[str] = set()
 
     # -- heap -----------------------------------------------------------------------------
     def read(self, key: Hashable, task: Task) -> Value:
         self.readers.setdefault(key, {})[task] = None
+        if key[0] == "g" and ("mod", key[1], ()) not in self._known:
+            self.enqueue(("mod", key[1], ()))  # a module needed only for its globals
         return self.heap.get(key, BOTTOM)
 
     def write(self, key: Hashable, value: Value) -> None:
@@ -126,7 +131,9 @@ class Analysis:
         """Analyse from every entry point until nothing changes (or the budget runs out)."""
         from .interpreter import Interpreter
         self._interp = Interpreter(self)
-        for name in sorted(self.program.modules):
+        self.relevant = set(self.program.modules) if self.every_module_is_entry \
+            else self.relevant_modules()
+        for name in sorted(self.relevant):
             self.enqueue(("mod", name, ()))
         self._drain()
         while not self._exhausted and (self._uncalled_functions() or self._entry_classes()):
@@ -151,12 +158,30 @@ class Analysis:
             if task[0] == "fn":
                 self.write(("ret", task), ret)
 
+    def relevant_modules(self) -> set[str]:
+        """Modules that import an active library (see :meth:`LibraryModel.active_roots`), or a
+        workspace module that does, transitively. Only these are entry points; other modules
+        are analysed on demand when a relevant one reads their globals."""
+        roots = self.library.active_roots()
+        imports = self.program.imports
+        relevant = {m for m, names in imports.items()
+                    if any(n.split(".")[0] in roots for n in names)}
+        changed = True
+        while changed:
+            changed = False
+            for mod, names in imports.items():
+                if mod not in relevant and any(
+                        n in relevant or n.rpartition(".")[0] in relevant for n in names):
+                    relevant.add(mod)
+                    changed = True
+        return relevant
+
     def _uncalled_functions(self) -> bool:
         """Module-level functions no analysed code calls: entries, with their defaults."""
         added = False
         for func in self.program.functions:
             if func.parent is None and func.cls is None and func.fid not in self.called \
-                    and not isinstance(func.node, ast.Lambda):
+                    and func.module.name in self.relevant and not isinstance(func.node, ast.Lambda):
                 self.function_task(func.fid, self._interp.default_context(func.fid, None))
                 added = True
         return added

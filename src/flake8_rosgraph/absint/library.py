@@ -195,6 +195,20 @@ class LibraryModel:
                 stack[:0] = list(model.bases)
         return out
 
+    def active_roots(self) -> frozenset[str]:
+        """Top-level packages whose models have effects or entry classes (``rclpy``, ``tf2_ros``…):
+        code that imports none of them, directly or through the workspace, creates nothing."""
+        roots = set()
+        for name, fn in self.functions.items():
+            if fn.effects:
+                roots.add(name.split(".")[0])
+        for name, cls in self.classes.items():
+            if cls.entry or any(m.effects for m in cls.methods.values()):
+                roots.add(name.split(".")[0])
+        roots.update(alias.split(".")[0] for alias, target in self.aliases.items()
+                     if target.split(".")[0] in roots)
+        return frozenset(roots)
+
     def method(self, cls_qualname: str, name: str) -> FunctionModel | None:
         for cls in self.mro(cls_qualname):
             model = self.classes.get(cls)

@@ -77,80 +77,27 @@ class Class:
         return self._cfg
 
 
-_SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef,
-           ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-
-
-def _scope_children(node: ast.AST):
-    """Direct children of a scope, not descending into nested scopes (but into their
-    decorators, defaults and bases, which run in the enclosing scope)."""
-    for child in ast.iter_child_nodes(node):
-        if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            yield from child.decorator_list
-            yield from child.args.defaults
-            yield from (d for d in child.args.kw_defaults if d is not None)
-            yield _Binder(child.name)
-        elif isinstance(child, ast.ClassDef):
-            yield from child.decorator_list
-            yield from child.bases
-            yield from (k.value for k in child.keywords)
-            yield _Binder(child.name)
-        elif isinstance(child, ast.Lambda):
-            yield from child.args.defaults
-        elif isinstance(child, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
-            yield child.generators[0].iter
-        else:
-            yield child
-
-
-@dataclass
-class _Binder:
-    name: str
-
-
-def scope_names(node: ast.AST) -> tuple[set[str], set[str], set[str], set[str], bool]:
-    """(bound, read, global-declared, nonlocal-declared, is_generator) of one scope."""
-    bound: set[str] = set()
-    read: set[str] = set()
-    glob: set[str] = set()
-    nonloc: set[str] = set()
-    generator = False
-    stack = list(_scope_children(node))
-    while stack:
-        cur = stack.pop()
-        if isinstance(cur, _Binder):
-            bound.add(cur.name)
-            continue
-        if isinstance(cur, ast.Name):
-            (read if isinstance(cur.ctx, ast.Load) else bound).add(cur.id)
-        elif isinstance(cur, ast.arg):
-            bound.add(cur.arg)
-        elif isinstance(cur, ast.alias):
-            bound.add((cur.asname or cur.name).split(".")[0])
-        elif isinstance(cur, ast.Global):
-            glob.update(cur.names)
-        elif isinstance(cur, ast.Nonlocal):
-            nonloc.update(cur.names)
-        elif isinstance(cur, ast.ExceptHandler) and cur.name:
-            bound.add(cur.name)
-        elif isinstance(cur, (ast.MatchAs, ast.MatchStar)) and cur.name:
-            bound.add(cur.name)
-        elif isinstance(cur, ast.MatchMapping) and cur.rest:
-            bound.add(cur.rest)
-        elif isinstance(cur, (ast.Yield, ast.YieldFrom)):
-            generator = True
-        elif isinstance(cur, ast.NamedExpr) and isinstance(cur.target, ast.Name):
-            bound.add(cur.target.id)
-        stack.extend(_scope_children(cur))
-    return bound - glob - nonloc, read, glob, nonloc, generator
-
-
 def _decorator_kind(node: ast.FunctionDef | ast.AsyncFunctionDef) -> str:
     for dec in node.decorator_list:
         name = dec.id if isinstance(dec, ast.Name) else getattr(dec, "attr", None)
         if name in ("staticmethod", "classmethod", "property"):
             return name
     return "function"
+
+
+@dataclass
+class _Scope:
+    """Names one scope binds, reads and declares, gathered in the single walk."""
+
+    fid: int | None = None
+    bound: set[str] = field(default_factory=set)
+    read: set[str] = field(default_factory=set)
+    glob: set[str] = field(default_factory=set)
+    nonloc: set[str] = field(default_factory=set)
+    generator: bool = False
+
+
+_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 class Program:
@@ -164,49 +111,111 @@ class Program:
         self.classes: list[Class] = []
         self.fid_of: dict[int, int] = {}     # id(ast node) -> fid
         self.cid_of: dict[int, int] = {}     # id(ast node) -> cid
+        self.imports: dict[str, frozenset[str]] = {}  # module -> absolute names it imports
         self.rejected: list[tuple[Module, str]] = []
         for mod in list(self.modules.values()):
-            bound, _, _, _, _ = scope_names(mod.tree)
-            mod.globals = frozenset(bound)
-            try:
-                self._collect(mod.tree, mod, "", None, None)
-            except RecursionError:
-                # Nesting too deep for a recursive walk: leave the module out, say so.
-                del self.modules[mod.name]
-                self.rejected.append((mod, "nested too deeply to analyse"))
+            self._collect(mod)
 
     # -- building ---------------------------------------------------------------------
-    def _collect(self, node: ast.AST, mod: Module, prefix: str, fid: int | None,
-                 cid: int | None) -> None:
-        for child in ast.iter_child_nodes(node):
-            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                name = "<lambda>" if isinstance(child, ast.Lambda) else child.name
-                bound, read, glob, nonloc, gen = scope_names(child)
-                func = Function(len(self.functions), child, mod, prefix + name, fid, cid,
-                                frozenset(bound), frozenset(), frozenset(glob),
-                                frozenset(nonloc), is_generator=gen)
-                if not isinstance(child, ast.Lambda):
-                    func.kind = _decorator_kind(child)
+    def _collect(self, mod: Module) -> None:
+        """One iterative walk over a module: number functions/classes, gather scopes."""
+        top = _Scope()
+        scopes: list[_Scope] = []
+        imported: set[str] = set()
+        # (node, scope, qualname prefix, enclosing fid, class cid the node is directly in)
+        stack: list[tuple[ast.AST, _Scope, str, int | None, int | None]] = [
+            (child, top, "", None, None) for child in reversed(mod.tree.body)]
+        while stack:
+            node, scope, prefix, fid, cid = stack.pop()
+            todo: list[tuple] = []
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                lam = isinstance(node, ast.Lambda)
+                name = "<lambda>" if lam else node.name
+                if not lam:
+                    scope.bound.add(name)
+                    todo += [(d, scope, prefix, fid, cid) for d in node.decorator_list]
+                todo += [(d, scope, prefix, fid, cid) for d in node.args.defaults]
+                todo += [(d, scope, prefix, fid, cid) for d in node.args.kw_defaults if d]
+                func = Function(len(self.functions), node, mod, prefix + name, fid,
+                                cid, frozenset(), frozenset(), frozenset(), frozenset())
+                if not lam:
+                    func.kind = _decorator_kind(node)
+                    if cid is not None:
+                        self.classes[cid].methods.setdefault(name, func.fid)
                 self.functions.append(func)
-                self.fid_of[id(child)] = func.fid
-                if cid is not None and not isinstance(child, ast.Lambda):
-                    self.classes[cid].methods.setdefault(child.name, func.fid)
-                self._collect(child, mod, func.qualname + ".", func.fid, None)
-            elif isinstance(child, ast.ClassDef):
-                klass = Class(len(self.classes), child, mod, prefix + child.name, fid)
+                self.fid_of[id(node)] = func.fid
+                inner = _Scope(func.fid)
+                scopes.append(inner)
+                a = node.args
+                inner.bound.update(x.arg for x in a.posonlyargs + a.args + a.kwonlyargs)
+                inner.bound.update(x.arg for x in (a.vararg, a.kwarg) if x)
+                body = [node.body] if lam else node.body
+                todo += [(b, inner, func.qualname + ".", func.fid, None) for b in body]
+            elif isinstance(node, ast.ClassDef):
+                scope.bound.add(node.name)
+                todo += [(d, scope, prefix, fid, cid)
+                         for d in node.decorator_list + node.bases + [k.value for k in node.keywords]]
+                klass = Class(len(self.classes), node, mod, prefix + node.name, fid)
                 self.classes.append(klass)
-                self.cid_of[id(child)] = klass.cid
-                self._collect(child, mod, klass.qualname + ".", fid, klass.cid)
+                self.cid_of[id(node)] = klass.cid
+                body_scope = _Scope(None)  # class bodies bind class attributes, not locals
+                body_scope.read = scope.read
+                todo += [(b, body_scope, klass.qualname + ".", fid, klass.cid) for b in node.body]
+            elif isinstance(node, _COMPREHENSIONS):
+                # The first iterable runs in the enclosing scope; targets stay in the
+                # comprehension (the interpreter evaluates it inline); reads count outside.
+                comp = _Scope(None)
+                comp.read = scope.read
+                todo.append((node.generators[0].iter, scope, prefix, fid, cid))
+                for i, gen in enumerate(node.generators):
+                    todo.append((gen.target, comp, prefix, fid, cid))
+                    if i:
+                        todo.append((gen.iter, comp, prefix, fid, cid))
+                    todo += [(c, comp, prefix, fid, cid) for c in gen.ifs]
+                elts = [node.key, node.value] if isinstance(node, ast.DictComp) else [node.elt]
+                todo += [(e, comp, prefix, fid, cid) for e in elts]
             else:
-                self._collect(child, mod, prefix, fid, cid)
-        if fid is not None and node is self.functions[fid].node:
-            self._mark_cells(fid)
+                if isinstance(node, ast.Name):
+                    (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
+                elif isinstance(node, ast.alias):
+                    scope.bound.add((node.asname or node.name).split(".")[0])
+                elif isinstance(node, ast.Import):
+                    imported.update(a.name for a in node.names)
+                elif isinstance(node, ast.ImportFrom):
+                    base = self.resolve_import(mod, node.module, node.level)
+                    imported.add(base)
+                    imported.update(f"{base}.{a.name}" for a in node.names)
+                elif isinstance(node, ast.Global):
+                    scope.glob.update(node.names)
+                elif isinstance(node, ast.Nonlocal):
+                    scope.nonloc.update(node.names)
+                elif isinstance(node, ast.ExceptHandler) and node.name:
+                    scope.bound.add(node.name)
+                elif isinstance(node, (ast.MatchAs, ast.MatchStar)) and node.name:
+                    scope.bound.add(node.name)
+                elif isinstance(node, ast.MatchMapping) and node.rest:
+                    scope.bound.add(node.rest)
+                elif isinstance(node, (ast.Yield, ast.YieldFrom)):
+                    scope.generator = True
+                elif isinstance(node, ast.NamedExpr) and isinstance(node.target, ast.Name):
+                    scope.bound.add(node.target.id)
+                todo += [(c, scope, prefix, fid, cid) for c in ast.iter_child_nodes(node)]
+            stack.extend(reversed(todo))
+        mod.globals = frozenset(top.bound - top.glob)
+        self.imports[mod.name] = frozenset(imported)
+        for sc in scopes:
+            func = self.functions[sc.fid]
+            func.locals = frozenset(sc.bound - sc.glob - sc.nonloc)
+            func.global_decl = frozenset(sc.glob)
+            func.nonlocal_decl = frozenset(sc.nonloc)
+            func.is_generator = sc.generator
+        for sc in scopes:
+            self._mark_cells(sc)
 
-    def _mark_cells(self, fid: int) -> None:
+    def _mark_cells(self, scope: _Scope) -> None:
         """Record, on each enclosing function, the locals this function reads freely."""
-        func = self.functions[fid]
-        _, read, _, _, _ = scope_names(func.node)
-        free = (read - func.locals - func.global_decl) | func.nonlocal_decl
+        func = self.functions[scope.fid]
+        free = (scope.read - func.locals - func.global_decl) | func.nonlocal_decl
         parent = func.parent
         while free and parent is not None:
             outer = self.functions[parent]

@@ -1,0 +1,49 @@
+"""Engine behaviour: which modules are entry points, budgets, determinism of effects."""
+import textwrap
+
+from flake8_rosgraph.absint.engine import Analysis
+from flake8_rosgraph.absint.program import Program
+from flake8_rosgraph.analysis import load_stubs
+from flake8_rosgraph.workspace import load_workspace
+
+
+def run(tmp_path, files, **kw):
+    for rel, text in files.items():
+        path = tmp_path / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(textwrap.dedent(text))
+    library, _ = load_stubs()
+    analysis = Analysis(Program(load_workspace(tmp_path).modules), library, **kw)
+    analysis.run()
+    return analysis
+
+
+FILES = {
+    "pkg/__init__.py": "",
+    "pkg/names.py": "TOPIC = 'scan'\n",
+    "pkg/node.py": """
+        import rclpy
+        from sensor_msgs.msg import LaserScan
+        from pkg.names import TOPIC
+        def main():
+            node = rclpy.create_node('n')
+            node.create_publisher(LaserScan, TOPIC, 10)
+    """,
+    "pkg/main.py": "from pkg.node import main\nmain()\n",
+    "tools/report.py": "def report(rows):\n    return [r for r in rows]\n",
+}
+
+
+def test_only_modules_reaching_an_active_library_are_entries(tmp_path):
+    analysis = run(tmp_path, FILES)
+    assert analysis.relevant == {"pkg.node", "pkg.main"}
+    analysed = {task[1] for task in analysis.effects if task[0] == "mod"}
+    assert "pkg.names" in analysed          # read on demand for TOPIC
+    assert "tools.report" not in analysed   # never needed
+    [publisher] = [e for e in analysis.all_effects() if e.kind == "publisher"]
+    assert publisher.arg("topic").strings() == ["scan"]
+
+
+def test_budget_exhaustion_is_reported_not_raised(tmp_path):
+    analysis = run(tmp_path, FILES, max_task_runs=1)
+    assert any("budget" in d.message for d in analysis.diagnostics)
