@@ -1,6 +1,6 @@
-"""Command line: ``flake8-rosgraph graph PATH`` (and ``python -m flake8_rosgraph``).
+"""Command line: ``flake8-rosgraph graph|check PATH`` (and ``python -m flake8_rosgraph``).
 
-Exit status: 0 success, 2 usage or internal error.  Diagnostics go to stderr, one per
+``graph`` exit status: 0 success, 2 usage or internal error; ``check``: 0 clean, 1 findings, 2 error.  Diagnostics go to stderr, one per
 line, and into the JSON output's ``diagnostics`` list.
 """
 from __future__ import annotations
@@ -9,7 +9,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import __version__
+from . import __version__, check_cli
 
 
 def _graph(args: argparse.Namespace) -> int:
@@ -45,6 +45,7 @@ def make_parser() -> argparse.ArgumentParser:
     graph.add_argument("--stubs", action="append", default=[], metavar="FILE",
                        help="extra library model (TOML); repeatable")
     graph.set_defaults(run=_graph)
+    check_cli.add_parser(sub)
     return parser
 
 

@@ -900,6 +900,15 @@ class Interpreter:
         klass = self.program.classes[cid]
         obj = Obj(f"entry:{klass.module.path}:{klass.qualname}", ClassAtom(cid))
         self.an.allocated.add(cid)
+        # Lookups need a frame; the class's module top level is the task that re-runs
+        # (harmlessly) if what they read grows.
+        outer, self.frame = self.frame, Frame(("mod", klass.module.name, ()), klass.module)
+        try:
+            self._schedule_entry(obj, cid)
+        finally:
+            self.frame = outer
+
+    def _schedule_entry(self, obj: Obj, cid: int) -> None:
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
         for atom in init or ():
             if isinstance(atom, BoundMethod):

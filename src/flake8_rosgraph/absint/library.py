@@ -43,9 +43,13 @@ class Signature:
     @staticmethod
     def parse(text: str) -> "Signature":
         try:
-            fn = ast.parse(f"def f({text}): pass").body[0]
+            body = ast.parse(f"def f({text}): pass").body
         except SyntaxError as exc:
             raise StubError(f"bad parameter list {text!r}: {exc.msg}") from None
+        fn = body[0]
+        if len(body) != 1 or not isinstance(fn, ast.FunctionDef) or len(fn.body) != 1 \
+                or not isinstance(fn.body[0], ast.Pass):
+            raise StubError(f"bad parameter list {text!r}: not a single parameter list")
         args = fn.args
         out: list[Param] = []
         positional = args.posonlyargs + args.args
@@ -113,7 +117,7 @@ def _ref(raw: Any, where: str) -> Ref:
         if keys == {"field"} and isinstance(raw["field"], str):
             return Ref("field", raw["field"])
     raise StubError(f"{where}: expected a parameter name or one of "
-                    "{{arg=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
+                    f"{{arg=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)
@@ -240,6 +244,12 @@ def _table(raw: Any, where: str) -> dict:
     return raw
 
 
+def _list(raw: Any, where: str) -> list:
+    if not isinstance(raw, list):
+        raise StubError(f"{where}: expected a list of tables")
+    return raw
+
+
 def _strings(raw: Any, where: str) -> tuple[str, ...]:
     if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
         raise StubError(f"{where}: expected a list of strings")
@@ -275,7 +285,7 @@ def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
     except StubError as exc:
         raise StubError(f"{where}.params: {exc}") from None
     effects = []
-    for i, eff in enumerate(raw.get("effects", [])):
+    for i, eff in enumerate(_list(raw.get("effects", []), where + ".effects")):
         eff = _table(eff, f"{where}.effects[{i}]")
         kind = eff.get("kind")
         if not isinstance(kind, str):
@@ -284,7 +294,7 @@ def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
                             for k, v in eff.items() if k != "kind"))
         effects.append(EffectSpec(kind, args))
     stores = []
-    for i, st in enumerate(raw.get("stores", [])):
+    for i, st in enumerate(_list(raw.get("stores", []), where + ".stores")):
         st = _table(st, f"{where}.stores[{i}]")
         if set(st) != {"on", "key", "value"}:
             raise StubError(f"{where}.stores[{i}]: needs exactly on, key, value")
@@ -311,6 +321,14 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
 
 
 def _constant(raw: Any, where: str) -> Value:
+    try:
+        return _constant_value(raw, where)
+    except StubError as exc:
+        message = str(exc)
+        raise StubError(message if message.startswith(where) else f"{where}: {message}") from None
+
+
+def _constant_value(raw: Any, where: str) -> Value:
     if isinstance(raw, dict) and "record" in raw:
         fields = _table(raw.get("fields", {}), where + ".fields")
         return atoms([Record(str(raw["record"]),
@@ -327,6 +345,9 @@ def load_stub_text(text: str, source: str, model: LibraryModel) -> None:
     except tomllib.TOMLDecodeError as exc:
         model.errors.append(f"{source}: not valid TOML: {exc}")
         return
+    except RecursionError:
+        model.errors.append(f"{source}: not loaded: nested too deeply")
+        return
     for key in sorted(set(data) - _TOP_KEYS):
         model.errors.append(f"{source}: unknown top-level key {key!r}")
     sections = (("functions", _function, model.functions), ("classes", _class, model.classes),
@@ -342,6 +363,8 @@ def load_stub_text(text: str, source: str, model: LibraryModel) -> None:
                 target[name] = reader(name, entry, where) if reader else _constant(entry, where)
             except StubError as exc:
                 model.errors.append(str(exc))
+            except RecursionError:
+                model.errors.append(f"{where}: nested too deeply")
     aliases = data.get("aliases", {})
     if isinstance(aliases, dict):
         for name, target in aliases.items():

@@ -1,0 +1,303 @@
+"""The flake8 adapter: options, the per-file view of workspace findings, the report-stage hook.
+
+flake8 hands the checker one file at a time; the checker finds the file's
+workspace (:mod:`.root`), gets that workspace's findings (analysed once per run
+and shared between worker processes through :mod:`.cache`) and yields those
+located in this file. flake8 then applies ``# noqa``, ``--select``/``--ignore``
+and ``--per-file-ignores`` as for any plugin.
+
+The checker never raises: an internal error becomes a ``ROS000`` finding at
+line 1 (``--rosgraph-debug`` / ``ROSGRAPH_DEBUG=1`` re-raises instead). A
+workspace-level failure would hit every checked file, so the report hook keeps
+the first ``ROS000`` of each message and drops the repeats.
+
+The report hook wraps ``flake8.checker.Manager.report`` (present, with the same
+``style_guide.handle_error`` protocol, in flake8 4.0.1 … 7.x). It sees every
+result after flake8's filters, in flake8's deterministic order, in the main
+process, whatever formatter the user picked, and writes the ``--rosgraph-sarif``
+sidecar from it. A ``flake8.report`` formatter could not do this: flake8 runs a
+single formatter, so it would replace the user's terminal output.
+"""
+from __future__ import annotations
+
+import ast
+import functools
+import itertools
+import os
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterator
+
+from . import __version__
+from .cache import WorkspaceReport, start_run, workspace_report
+from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options
+from .root import discover_root, find_vcs_root
+from .rules.base import Finding
+
+#: A flake8 plugin entry name that is a code prefix (``E``, ``F``, ``ROS``).
+_CODE_PREFIX = re.compile(r"^[A-Z]{1,3}[0-9]{0,3}$")
+SIDECAR_CATEGORY = "flake8-rosgraph/flake8"
+
+
+@dataclass(frozen=True)
+class _Run:
+    """What ``parse_options`` learnt about the current flake8 run."""
+
+    settings: Settings
+    codes: CodeFilter
+    #: Why the options could not be used, reported as ROS000 on each checked file.
+    error: str | None = None
+    roots: dict[Path, Path] = field(default_factory=dict, compare=False)
+
+
+_RUN: _Run | None = None
+
+
+def _describe(exc: BaseException) -> str:
+    detail = str(exc).strip().splitlines()
+    return f"{type(exc).__name__}: {detail[0][:200]}" if detail else type(exc).__name__
+
+
+def _internal_error_text(description: str) -> str:
+    return (f"{INTERNAL_ERROR_CODE} flake8-rosgraph internal error ({description}); "
+            "rerun with --rosgraph-debug or ROSGRAPH_DEBUG=1 for the traceback")
+
+
+def _analysis_error_text(description: str) -> str:
+    return f"{INTERNAL_ERROR_CODE} flake8-rosgraph could not analyse everything, findings may be missing: {description}"
+
+
+def _current_run() -> _Run:
+    """The run ``parse_options`` set up; flake8 always calls it, but be safe if it did not."""
+    if _RUN is not None:
+        return _RUN
+    from .rules import RULES
+
+    return _Run(Settings.resolve({}, os.environ), CodeFilter.build((), RULES))
+
+
+def _root_for(run: _Run, path: Path) -> Path:
+    if run.settings.root is not None:
+        return Path(os.path.abspath(run.settings.root))
+    directory = path.parent
+    if directory not in run.roots:
+        run.roots[directory] = discover_root(path)
+    return run.roots[directory]
+
+
+@functools.lru_cache(maxsize=8)
+def _by_file(report: WorkspaceReport) -> dict[str, list[Finding]]:
+    index: dict[str, list[Finding]] = {}
+    for finding in report.findings:
+        index.setdefault(finding.location.path, []).append(finding)
+    return index
+
+
+def _relative(path: Path, root: Path) -> str | None:
+    for candidate, base in ((path, root), (path.resolve(), root.resolve())):
+        try:
+            return candidate.relative_to(base).as_posix()
+        except ValueError:
+            continue
+    return None
+
+
+def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, str] | None:
+    path = Path(os.path.abspath(filename))
+    root = _root_for(run, path)
+    relative = _relative(path, root)
+    return None if relative is None else (workspace_report(root, run.settings), relative)
+
+
+def findings_in_file(run: _Run, filename: str) -> list[Finding]:
+    """The findings of ``filename``'s workspace that are located in ``filename`` and not filtered out."""
+    found = _file_report(run, filename)
+    if found is None:
+        return []
+    report, relative = found
+    return [f for f in _by_file(report).get(relative, []) if run.codes(f.code)]
+
+
+def analysis_errors(run: _Run, filename: str) -> list[str]:
+    """The analysis's error diagnostics (a broken stub, an internal error it caught) of the file's workspace.
+
+    The graph is incomplete then, so the rules' silence proves nothing: each
+    becomes a ROS000 on every checked file (the report hook keeps one).
+    """
+    found = _file_report(run, filename)
+    if found is None:
+        return []
+    return [f"{d.path}:{d.line}: {d.message}" if d.path else d.message
+            for d in found[0].diagnostics if d.severity == "error"]
+
+
+class RosGraphChecker:
+    """The ``ROS`` flake8 extension: reports the graph rules' findings in the files they are located in."""
+
+    name = "flake8-rosgraph"
+    version = __version__
+
+    def __init__(self, tree: ast.AST, filename: str) -> None:
+        # flake8 classifies plugins by their parameters: ``tree`` makes this an AST plugin.
+        self.filename = filename
+
+    @classmethod
+    def add_options(cls, parser: Any) -> None:
+        register_flake8_options(parser)
+
+    @classmethod
+    def parse_options(cls, options: Any) -> None:
+        """Called once per run in the main process (and in each spawned worker)."""
+        global _RUN
+        start_run()
+        settings = Settings.from_flake8(options)
+        try:
+            from .rules import RULES
+
+            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES))
+        except Exception as exc:
+            if settings.debug:
+                raise
+            _RUN = _Run(settings, CodeFilter(), error=_describe(exc))
+        _install_report_hook()
+
+    def run(self) -> Iterator[tuple[int, int, str, type]]:
+        try:
+            run = _current_run()
+        except Exception as exc:  # not even the rules could be imported
+            yield 1, 0, _internal_error_text(_describe(exc)), type(self)
+            return
+        try:
+            if run.error is not None:
+                raise RuntimeError(run.error)
+            findings = findings_in_file(run, self.filename)
+            errors = analysis_errors(run, self.filename)
+        except Exception as exc:
+            if run.settings.debug:
+                raise
+            yield 1, 0, _internal_error_text(_describe(exc)), type(self)
+            return
+        for error in errors:
+            yield 1, 0, _analysis_error_text(error), type(self)
+        for finding in findings:
+            yield finding.location.line, finding.location.column - 1, f"{finding.code} {finding.message}", type(self)
+
+
+# -- the report stage ------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class _Reported:
+    """A result that passed flake8's filters, as ``handle_error`` saw it."""
+
+    code: str
+    filename: str
+    line: int
+    column: int  # 0-based, as plugins report it
+    text: str
+
+
+def _install_report_hook() -> None:
+    from flake8 import checker
+
+    original = checker.Manager.report
+    if getattr(original, "_rosgraph_hook", False):
+        return
+
+    @functools.wraps(original)
+    def report(self: Any) -> Any:
+        return _report(self, original)
+
+    report._rosgraph_hook = True  # type: ignore[attr-defined]
+    checker.Manager.report = report
+
+
+def _report(manager: Any, original: Callable[[Any], Any]) -> Any:
+    run = _RUN
+    if run is None:
+        return original(manager)
+    reported: list[_Reported] = []
+    internal_errors: set[str] = set()
+    guide = manager.style_guide
+    inner = guide.handle_error
+    shadowed = vars(guide).get("handle_error")
+
+    def handle_error(code: str, filename: str, line_number: int, column_number: int | None,
+                     text: str, physical_line: str | None = None) -> int:
+        if code == INTERNAL_ERROR_CODE and text in internal_errors:
+            return 0
+        count = inner(code=code, filename=filename, line_number=line_number, column_number=column_number,
+                      text=text, physical_line=physical_line)
+        if count:
+            if code == INTERNAL_ERROR_CODE:
+                internal_errors.add(text)
+            reported.append(_Reported(code, filename, line_number, column_number or 0, text))
+        return count
+
+    guide.handle_error = handle_error
+    try:
+        counts = original(manager)
+    finally:
+        if shadowed is None:
+            del guide.handle_error
+        else:
+            guide.handle_error = shadowed
+    if run.settings.sarif is not None:
+        try:
+            _write_sidecar(run, reported, _plugin_origins(manager))
+        except Exception as exc:
+            if run.settings.debug:
+                raise
+            print(f"flake8-rosgraph: could not write {run.settings.sarif}: {_describe(exc)}", file=sys.stderr)
+    return counts
+
+
+def _matching_finding(run: _Run, item: _Reported) -> tuple[Path, Finding] | None:
+    """The workspace finding behind a reported ROS result, for its related locations."""
+    path = Path(os.path.abspath(item.filename))
+    for finding in findings_in_file(run, item.filename):
+        same_place = (finding.location.line, finding.location.column - 1) == (item.line, item.column)
+        if same_place and (finding.code, finding.message) == (item.code, item.text):
+            return _root_for(run, path), finding
+    return None
+
+
+def _write_sidecar(run: _Run, reported: list[_Reported], origins: dict[str, Any]) -> None:
+    from . import sarif
+
+    problems = []
+    for item in reported:
+        match = None
+        if item.code.startswith("ROS") and item.code != INTERNAL_ERROR_CODE:
+            match = _matching_finding(run, item)
+        if match is not None:
+            problems.append(sarif.finding_problem(*match))
+        else:
+            place = sarif.Place(Path(os.path.abspath(item.filename)), item.line, item.column + 1)
+            problems.append(sarif.Problem(place, item.code, item.text))
+    cwd = Path.cwd()
+    log = sarif.sarif_log(
+        problems, sarif.catalogue(), srcroot=find_vcs_root(cwd) or cwd, category=SIDECAR_CATEGORY,
+        origins={prefix: sarif.Origin(*origin) for prefix, origin in origins.items()},
+    )
+    sarif.write(run.settings.sarif, log)
+
+
+def _plugin_origins(manager: Any) -> dict[str, tuple[str, str]]:
+    """Code prefix → (plugin, version), from flake8 ≥ 5's ``manager.plugins`` or flake8 4's ``manager.checks``."""
+    origins: dict[str, tuple[str, str]] = {}
+    try:
+        plugins = getattr(manager, "plugins", None)
+        if plugins is not None and hasattr(plugins, "tree"):
+            for loaded in itertools.chain(plugins.tree, plugins.logical_line, plugins.physical_line):
+                origins[loaded.entry_name] = (loaded.plugin.package, loaded.plugin.version)
+        else:
+            for plugin in manager.checks.plugins.values():
+                if plugin.name.startswith("pycodestyle."):  # flake8 4 registers pycodestyle per check
+                    origins["E"] = origins["W"] = (plugin.plugin_name, plugin.version)
+                else:
+                    origins[plugin.name] = (plugin.plugin_name, plugin.version)
+    except Exception:  # what is known of other plugins is a nicety, never worth a failure
+        return {}
+    return {prefix: origin for prefix, origin in sorted(origins.items()) if _CODE_PREFIX.match(prefix)}

@@ -1,0 +1,109 @@
+"""Which directory is "the workspace" of a checked file.
+
+The graph rules judge whole-workspace facts, but flake8's file list says
+nothing about the workspace: pre-commit passes only the changed files,
+``ament_flake8`` passes none, ``flake8 .`` passes the root. So the workspace is
+found from the checked file itself, in this order:
+
+1. the nearest **colcon workspace** at or above the file: a directory ``WS``
+   whose ``src/`` holds the file (or that is the checked directory itself) and
+   either the file lies in a ROS package (a directory holding ``package.xml``)
+   inside ``WS/src``, or ``WS/src`` holds ROS packages, or ``WS`` carries the
+   ``COLCON_IGNORE`` markers colcon leaves in ``build/``, ``install/``, ``log/``. The whole workspace is the system that
+   runs together, so it beats the repository it was cloned from;
+2. the nearest **version-control root** (``.git``, ``.hg``, ``.svn``, ``.jj``),
+   ignoring one in the home directory or at ``/`` (a dotfiles repository is not
+   a ROS workspace);
+3. otherwise the outermost of the current directory (when it contains the
+   file) and the file's ROS package directory, else the file's directory.
+
+An explicit root (``--rosgraph-root`` / ``ROSGRAPH_ROOT``) skips all of this.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+#: Entries whose presence makes a directory a version-control root.
+VCS_MARKERS: tuple[str, ...] = (".git", ".hg", ".svn", ".jj")
+#: colcon writes COLCON_IGNORE into each of these when it builds a workspace.
+COLCON_BASES: tuple[str, ...] = ("build", "install", "log")
+#: The manifest that makes a directory a ROS package.
+PACKAGE_MANIFEST = "package.xml"
+
+
+def _start_dir(path: Path) -> Path:
+    path = Path(os.path.abspath(path))
+    return path if path.is_dir() else path.parent
+
+
+def _ancestors(path: Path) -> list[Path]:
+    start = _start_dir(path)
+    return [start, *start.parents]
+
+
+def _is_within(path: Path, directory: Path) -> bool:
+    return path == directory or directory in path.parents
+
+
+def _has_colcon_markers(directory: Path) -> bool:
+    return any((directory / base / "COLCON_IGNORE").is_file() for base in COLCON_BASES)
+
+
+def _holds_packages(src: Path) -> bool:
+    """Whether ``src`` holds a ROS package within three levels (``src/repo/group/pkg``)."""
+    patterns = ("*/" + PACKAGE_MANIFEST, "*/*/" + PACKAGE_MANIFEST, "*/*/*/" + PACKAGE_MANIFEST)
+    return any(next(src.glob(pattern), None) is not None for pattern in patterns)
+
+
+def find_colcon_root(path: Path) -> Path | None:
+    """The nearest colcon workspace that is ``path`` or holds it in its ``src/`` tree, if any."""
+    start = _start_dir(path)
+    inside_package = False
+    for directory in _ancestors(start):
+        src = directory / "src"
+        if (start == directory or _is_within(start, src)) and src.is_dir():
+            if inside_package or _has_colcon_markers(directory) or _holds_packages(src):
+                return directory
+        if (directory / PACKAGE_MANIFEST).is_file():
+            inside_package = True
+    return None
+
+
+def find_vcs_root(path: Path) -> Path | None:
+    """The nearest version-control root above ``path`` (not the home directory or ``/``)."""
+    excluded = {Path(_start_dir(path).anchor)}
+    try:
+        excluded.add(Path(os.path.abspath(Path.home())))
+    except RuntimeError:  # no home directory to protect
+        pass
+    for directory in _ancestors(path):
+        if directory in excluded:
+            continue
+        if any((directory / marker).exists() for marker in VCS_MARKERS):
+            return directory
+    return None
+
+
+def find_package_dir(path: Path) -> Path | None:
+    """The nearest ROS package directory (one holding ``package.xml``) above ``path``."""
+    for directory in _ancestors(path):
+        if (directory / PACKAGE_MANIFEST).is_file():
+            return directory
+    return None
+
+
+def discover_root(path: Path, cwd: Path | None = None) -> Path:
+    """The workspace root for ``path`` (a file or directory), found as the module docstring says."""
+    start = _start_dir(path)
+    found = find_colcon_root(start) or find_vcs_root(start)
+    if found is not None:
+        return found
+    candidates = [start]
+    here = Path(os.path.abspath(cwd if cwd is not None else Path.cwd()))
+    if _is_within(start, here):
+        candidates.append(here)
+    package = find_package_dir(start)
+    if package is not None:
+        candidates.append(package)
+    return min(candidates, key=lambda p: len(p.parts))

@@ -1,0 +1,64 @@
+"""The graph rules ROS001–ROS010: one module per rule, run together over one extracted graph.
+
+``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
+SARIF writer, the generated ``docs/rules.md``) reads, in code order.
+"""
+from __future__ import annotations
+
+from typing import Iterable
+
+from ..graph.model import RosGraph
+from .base import Finding, Rule, RuleConfig
+from .ros001_publisher_without_subscriber import PublisherWithoutSubscriber
+from .ros002_self_loop import SelfLoop
+from .ros003_subscription_without_publisher import SubscriptionWithoutPublisher
+from .ros004_message_type_mismatch import MessageTypeMismatch
+from .ros005_qos_incompatible import QosIncompatible
+from .ros006_invalid_name import InvalidName
+from .ros007_duplicate_node_name import DuplicateNodeName
+from .ros008_service_client_without_server import ServiceClientWithoutServer
+from .ros009_action_client_without_server import ActionClientWithoutServer
+from .ros010_unresolved_name import UnresolvedName
+
+RULES: tuple[Rule, ...] = (
+    PublisherWithoutSubscriber(),
+    SelfLoop(),
+    SubscriptionWithoutPublisher(),
+    MessageTypeMismatch(),
+    QosIncompatible(),
+    InvalidName(),
+    DuplicateNodeName(),
+    ServiceClientWithoutServer(),
+    ActionClientWithoutServer(),
+    UnresolvedName(),
+)
+
+_BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
+
+
+def rule_by_code(code: str) -> Rule:
+    """The rule with this code; ``KeyError`` for an unknown code."""
+    return _BY_CODE[code]
+
+
+def selected_rules(select: Iterable[str] | None = None) -> tuple[Rule, ...]:
+    """The rules to run: the default-enabled ones, or those whose code starts with an entry of ``select``.
+
+    Prefixes work as in flake8's ``--select`` (``ROS0`` selects ROS001–ROS010,
+    including the off-by-default ROS010, because it is asked for explicitly).
+    """
+    if select is None:
+        return tuple(rule for rule in RULES if rule.default_enabled)
+    prefixes = tuple(select)
+    return tuple(rule for rule in RULES if rule.code.startswith(prefixes))
+
+
+def run_rules(graph: RosGraph, config: RuleConfig, select: Iterable[str] | None = None) -> list[Finding]:
+    """Run the selected rules over ``graph``: findings sorted by location, code and message, duplicates dropped."""
+    findings: set[Finding] = set()
+    for rule in selected_rules(select):
+        findings.update(rule.check(graph, config))
+    return sorted(findings)
+
+
+__all__ = ["RULES", "Finding", "Rule", "RuleConfig", "rule_by_code", "run_rules", "selected_rules"]

@@ -1,0 +1,123 @@
+"""What ROS001, ROS003, ROS008 and ROS009 share: reporting an end whose other end is missing.
+
+An absence is only as good as the analysis that failed to find the other end,
+so these rules stay quiet whenever something could fill the gap:
+
+* the name is exempt (infrastructure, rviz tools, per-node built-in services,
+  or the user's external names — see :mod:`.exempt`);
+* some entity of the peer kind has a name the analysis could not resolve and a
+  type that does not rule the match out;
+* another alternative of the same creation site (``'a' if sim else 'b'``) is
+  connected or excused: the site works in at least one configuration;
+* the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
+
+**Interfaces.** Most dangling ends in real repositories are deliberate: the
+other end is a C++ node, a robot, a simulator, rviz or a person at the command
+line. A dangling end is taken for such an interface, and reported only when a
+near-miss partner exists (a likely typo or namespace slip — the strongest
+signal), when
+
+* the node has no endpoint of the same kind that reaches another node of the
+  workspace — none of its publishers (for ROS001) is subscribed here, so its
+  outputs are meant for the outside; this covers stand-alone drivers and tools;
+* or several nodes use the name in the same role (six example programs all
+  publishing the robot's ``/cmd_vel``): they agree on it, so it is no slip;
+* or the name lives in a namespace other than ``/`` where the workspace uses
+  at least two names, all in this role and none in the other (``/fmu/out/...``
+  only subscribed, ``/local_costmap/clear_...`` only called): another
+  program's interface.
+
+What is left is the odd one out: a node that feeds (or is fed by) the
+workspace through some publishers and not through this one — the thesis's
+``topic5`` and ``topic8``.
+
+Measured with the extractor on 15 public repositories with rclpy nodes
+(ros2/examples, ros2/demos, navigation2, turtlebot3, geometry2,
+gazebo_ros_pkgs, teleop_tools, teleop_twist_keyboard, nmea_navsat_driver,
+diagnostics, audio_common, ros2_control_demos, Universal_Robots_ROS2_Driver,
+px4-offboard, yolo_ros; 120 nodes): reporting every dangling end gives 135
+findings, and reading them found no wiring bug among them (robot, controller,
+Nav2 and camera interfaces, rviz outputs, command-line inputs). With the
+policy above, 3 remain, also by design (PX4's ``/fmu/in/offboard_control_mode``
+read by the flight controller, yolo_ros's depth inputs from a camera driver).
+The knob ``report_interfaces=True`` (constructor argument) reports every
+dangling end, and the message then says how to declare an interface.
+"""
+from __future__ import annotations
+
+from collections import Counter
+from typing import ClassVar, Iterator
+
+from ..graph.model import PEER_KIND, RosGraph
+from .base import Finding, Rule, RuleConfig
+from .exempt import ExemptNames
+from .near_miss import NearMissFinder
+from .topics import Endpoint, EndpointIndex, namespace_of
+from .vocabulary import NAME_NOUN, VERB, related
+
+
+class AbsenceRule(Rule):
+    """Base of the "X without Y" rules; subclasses set :attr:`kind`, :attr:`missing` and the Rule attributes."""
+
+    #: The kind whose entities may dangle (``"publishers"`` for ROS001).
+    kind: ClassVar[str]
+    #: What is missing, for the message ("subscriber" in "has no subscriber").
+    missing: ClassVar[str]
+
+    def __init__(self, report_interfaces: bool = False) -> None:
+        #: Knob: also report dangling ends that look like interfaces (see the module docstring).
+        self.report_interfaces = report_interfaces
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        index = EndpointIndex.build(graph)
+        exempt = ExemptNames.build(config.external_names)
+        dangling = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)]
+        if not dangling:
+            return
+        dangling = self._whole_sites_only(dangling, index)
+        peer_kind = PEER_KIND[self.kind]
+        dangling_peers = {
+            name: index.using(peer_kind, name) for name in index.names(peer_kind)
+            if name not in exempt and not index.using(self.kind, name)
+        }
+        near_misses = NearMissFinder(dangling_peers)
+        wired = index.wired_nodes(self.kind, exempt)
+        one_way = index.one_way_namespaces(self.kind)
+        for endpoint in dangling:
+            name = endpoint.entity.name
+            interface = (id(endpoint.node) not in wired
+                         or index.node_count(self.kind, name) > 1
+                         or namespace_of(name) in one_way)
+            yield from self._report(endpoint, near_misses, interface)
+
+    def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
+        return (endpoint.entity.invalid is None  # rclpy raises before it exists; ROS006 says so
+                and endpoint.entity.name not in exempt
+                and not index.peers(endpoint)
+                and not index.unresolved_peer_may_match(endpoint))
+
+    def _whole_sites_only(self, dangling: list[Endpoint], index: EndpointIndex) -> list[Endpoint]:
+        """Keep the dangling endpoints whose creation site dangles in every alternative.
+
+        ``create_publisher(String, 'a' if sim else 'b', 10)`` yields two
+        publishers at one location; if either is connected (or excused), the
+        site works in some configuration and the other value is not reported.
+        """
+        alternatives = Counter(ep.entity.location for ep in index.endpoints(self.kind))
+        dangling_at = Counter(ep.entity.location for ep in dangling)
+        return [ep for ep in dangling if dangling_at[ep.entity.location] == alternatives[ep.entity.location]]
+
+    def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool) -> Iterator[Finding]:
+        entity = endpoint.entity
+        head = f"{NAME_NOUN[self.kind]} '{entity.name}' has no {self.missing}"
+        near = near_misses.find(endpoint)
+        if near is not None:
+            peer = near.peer.entity
+            message = (f"{head}; did you mean '{near.name}' "
+                       f"({VERB[peer.kind]} at {peer.location.short()})?")
+            yield Finding(entity.location, self.code, message, (related(peer),))
+        elif not interface:
+            yield Finding(entity.location, self.code, head)
+        elif self.report_interfaces:
+            message = f"{head} in the workspace; if something outside uses it, add it to --rosgraph-external-topics"
+            yield Finding(entity.location, self.code, message)

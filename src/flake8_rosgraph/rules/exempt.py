@@ -1,0 +1,91 @@
+"""Names whose other end lives outside any Python workspace, so an absence there proves nothing.
+
+The "without" rules (ROS001, ROS003, ROS008, ROS009) and the self-loop rule
+(ROS002) skip these names. Each built-in entry says why it is there; users add
+their own through :attr:`RuleConfig.external_names` (the
+``--rosgraph-external-topics`` option), with the same pattern syntax:
+
+* an entry without wildcards is an exact name; a missing leading ``/`` is added
+  (``cmd_vel`` means ``/cmd_vel``), because graph names are fully resolved;
+* ``*`` matches within one name component, ``?`` one character of a component,
+  ``**`` any run of characters including ``/`` (so ``/**/get_parameters``
+  matches ``/a/get_parameters`` and ``/ns/a/get_parameters``).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Iterable
+
+#: (pattern, why it is exempt). Exact names first, then per-node built-in endpoints.
+BUILTIN_EXEMPT: tuple[tuple[str, str], ...] = (
+    ("/rosout", "every node publishes its log here; rcl logging, rqt_console and bags consume it"),
+    ("/parameter_events", "every node publishes parameter changes here; `ros2 param` and parameter "
+                          "event handlers consume it"),
+    ("/tf", "the transform tree: broadcast and buffered by tf2 in C++ nodes, rviz and "
+            "robot_state_publisher"),
+    ("/tf_static", "static transforms, usually from robot_state_publisher or static_transform_publisher"),
+    ("/clock", "published by simulators and `ros2 bag play --clock`; every node with use_sim_time "
+               "subscribes"),
+    ("/diagnostics", "aggregated by diagnostic_aggregator and shown by rqt_robot_monitor, both C++ tools"),
+    ("/robot_description", "published (latched) by robot_state_publisher from the URDF"),
+    ("/joint_states", "joint_state_publisher or ros2_control's joint_state_broadcaster publish it, "
+                      "robot_state_publisher consumes it; Python code is usually one half of that pair"),
+    ("/initialpose", "published by rviz2's '2D Pose Estimate' tool"),
+    ("/goal_pose", "published by rviz2's '2D Goal Pose' tool"),
+    ("/clicked_point", "published by rviz2's 'Publish Point' tool"),
+    ("/**/describe_parameters", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/get_parameter_types", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/get_parameters", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/list_parameters", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/set_parameters", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/set_parameters_atomically", "parameter service every node serves (rclpy, rclcpp)"),
+    ("/**/get_type_description", "type description service every node serves (Jazzy and later)"),
+    ("/**/get_logger_levels", "logger service a node serves when started with the logger service enabled"),
+    ("/**/set_logger_levels", "logger service a node serves when started with the logger service enabled"),
+    ("/**/change_state", "lifecycle service every lifecycle node serves (also C++ ones)"),
+    ("/**/get_state", "lifecycle service every lifecycle node serves (also C++ ones)"),
+    ("/**/get_available_states", "lifecycle service every lifecycle node serves (also C++ ones)"),
+    ("/**/get_available_transitions", "lifecycle service every lifecycle node serves (also C++ ones)"),
+    ("/**/get_transition_graph", "lifecycle service every lifecycle node serves (also C++ ones)"),
+    ("/**/transition_event", "lifecycle topic every lifecycle node publishes (also C++ ones)"),
+)
+
+_WILDCARDS = re.compile(r"\*\*|\*|\?")
+_WILDCARD_REGEX = {"**": ".*", "*": "[^/]*", "?": "[^/]"}
+
+
+def _normalize(entry: str) -> str:
+    entry = entry.strip()
+    return entry if entry.startswith("/") else "/" + entry
+
+
+def _compile(pattern: str) -> re.Pattern[str]:
+    parts: list[str] = []
+    pos = 0
+    for match in _WILDCARDS.finditer(pattern):
+        parts.append(re.escape(pattern[pos:match.start()]))
+        parts.append(_WILDCARD_REGEX[match.group()])
+        pos = match.end()
+    parts.append(re.escape(pattern[pos:]))
+    return re.compile("".join(parts))
+
+
+@dataclass(frozen=True)
+class ExemptNames:
+    """The built-in exempt list plus the user's external names, ready for fast lookups."""
+
+    exact: frozenset[str]
+    patterns: tuple[re.Pattern[str], ...]
+
+    @classmethod
+    def build(cls, external: Iterable[str] = ()) -> ExemptNames:
+        entries = [p for p, _ in BUILTIN_EXEMPT] + [_normalize(e) for e in external if e.strip()]
+        exact = frozenset(e for e in entries if not _WILDCARDS.search(e))
+        patterns = tuple(_compile(e) for e in sorted(set(entries) - exact))
+        return cls(exact, patterns)
+
+    def __contains__(self, name: object) -> bool:
+        if not isinstance(name, str):
+            return False
+        return name in self.exact or any(p.fullmatch(name) for p in self.patterns)

@@ -1,0 +1,85 @@
+"""The near-miss hint: a dangling end whose likely partner is dangling too, under a slightly different name.
+
+A publisher on ``/cmd_vel`` with no subscriber *and* a subscription on
+``/cmdvel`` with no publisher is the strongest signal the wiring rules have: it
+is almost always a typo or a namespace slip, not an interface. Two names are
+near misses when, with compatible message types,
+
+* they are within a small edit distance (1 for names shorter than
+  :data:`LONG_NAME` characters, 2 otherwise), or
+* they differ only by namespace: the same last component
+  (``/robot1/scan`` vs ``/scan``; a forgotten or extra leading ``/`` in code
+  shows up this way once names are resolved);
+
+but not when they differ only in their numbers (``/topic5`` vs ``/topic8``,
+``/robot1/odom`` vs ``/robot2/odom``): numbered names are deliberate families.
+"""
+from __future__ import annotations
+
+import re
+from collections import defaultdict
+from dataclasses import dataclass
+from typing import Sequence
+
+from ..graph.names import edit_distance
+from .topics import Endpoint, types_compatible
+
+#: Names at least this long tolerate an edit distance of 2 instead of 1.
+LONG_NAME = 10
+
+_NUMBER = re.compile(r"\d+")
+
+
+def _basename(name: str) -> str:
+    return name.rsplit("/", 1)[-1]
+
+
+@dataclass(frozen=True)
+class NearMiss:
+    """The dangling peer name a dangling end probably meant, and where that peer is."""
+
+    name: str
+    peer: Endpoint
+
+
+class NearMissFinder:
+    """Looks up near misses among the dangling peers of one kind.
+
+    Built once per rule run from the dangling peer names; each lookup compares
+    against names of nearby length and the names sharing the last component,
+    not against every dangling name in the workspace.
+    """
+
+    def __init__(self, dangling_peers: dict[str, Sequence[Endpoint]]) -> None:
+        self._peers = dangling_peers
+        self._by_length: dict[int, list[str]] = defaultdict(list)
+        self._by_basename: dict[str, list[str]] = defaultdict(list)
+        for name in sorted(dangling_peers):
+            self._by_length[len(name)].append(name)
+            self._by_basename[_basename(name)].append(name)
+
+    def find(self, endpoint: Endpoint) -> NearMiss | None:
+        """The best near miss for ``endpoint`` (closest name first, then alphabetical), if any."""
+        name = endpoint.entity.name
+        if name is None:
+            return None
+        limit = 1 if len(name) < LONG_NAME else 2
+        candidates: dict[str, int] = {}
+        for length in range(len(name) - limit, len(name) + limit + 1):
+            for other in self._by_length.get(length, ()):
+                distance = edit_distance(name, other, limit)
+                if distance <= limit:
+                    candidates[other] = distance
+        for other in self._by_basename.get(_basename(name), ()):
+            candidates.setdefault(other, edit_distance(name, other, len(name) + len(other)))
+        ranked = sorted((distance, other) for other, distance in candidates.items()
+                        if self._plausible(name, other))
+        for _, other in ranked:
+            compatible = [p for p in self._peers[other] if types_compatible(endpoint.entity.type, p.entity.type)]
+            if compatible:
+                return NearMiss(other, compatible[0])
+        return None
+
+    @staticmethod
+    def _plausible(name: str, other: str) -> bool:
+        return _NUMBER.sub("#", name) != _NUMBER.sub("#", other)

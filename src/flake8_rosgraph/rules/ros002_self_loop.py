@@ -1,0 +1,89 @@
+"""ROS002 self-loop."""
+from __future__ import annotations
+
+from collections import defaultdict
+from typing import Iterator
+
+from ..graph.model import Entity, RosGraph, RosNode
+from .base import Finding, Rule, RuleConfig
+from .exempt import ExemptNames
+from .vocabulary import related
+
+
+class SelfLoop(Rule):
+    """## What it does
+    Checks for nodes that subscribe to a topic they also publish (the red
+    "loop" edge of the thesis graphs).
+
+    ## Why is this bad?
+    The node receives every message it sends, through the middleware: its
+    callback runs on its own output, which can feed back without end, doubles
+    the processing of every message, and usually means that the subscription
+    was meant for a different topic (an input named like the output) or that
+    the data should be passed by a direct method call.
+
+    ## Known problems
+    Some loops are deliberate (a node that watches its own output for
+    monitoring, or a relay that republishes). Exempt names are not reported:
+    a node that broadcasts transforms and also listens to `/tf` through a tf2
+    `TransformListener` is normal. The rule compares resolved names only; an unresolved name never
+    makes a loop. A node class instantiated by several executables that each
+    add entities from their own module (a reader executable publishing what a
+    parser executable subscribes to, on one driver class) is not a loop: ends
+    created in two files other than the node's own are not compared.
+
+    ## Example
+    ```python
+    class Filter(Node):
+        def __init__(self):
+            super().__init__('filter')
+            self.pub = self.create_publisher(Imu, 'imu', 10)
+            self.create_subscription(Imu, 'imu', self.on_imu, 10)
+    ```
+
+    ## Use instead
+    ```python
+            self.pub = self.create_publisher(Imu, 'imu/filtered', 10)
+            self.create_subscription(Imu, 'imu/raw', self.on_imu, 10)
+    ```
+
+    ## Options
+    - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): names listed
+      there are not reported either.
+    """
+
+    code = "ROS002"
+    name = "self-loop"
+    level = "warning"
+    precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "a node subscribes to a topic that it also publishes"
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        exempt = ExemptNames.build(config.external_names)
+        for node in graph.nodes:
+            published: dict[str, list[Entity]] = defaultdict(list)
+            for pub in node.of_kind("publishers"):
+                if pub.name is not None and pub.name not in exempt:
+                    published[pub.name].append(pub)
+            for sub in node.of_kind("subscriptions"):
+                if sub.name not in published:
+                    continue
+                pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)),
+                              key=lambda e: e.location)
+                if pubs:
+                    message = (f"node '{node.fqn or '?'}' subscribes to topic '{sub.name}' that it publishes "
+                               f"at {pubs[0].location.short()}")
+                    yield Finding(sub.location, self.code, message, tuple(related(p) for p in pubs))
+
+
+def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:
+    """Whether ``pub`` and ``sub`` can belong to one running instance of ``node``.
+
+    A node class may be instantiated by several executables, each adding its
+    own entities from its own module (nmea_navsat_driver's serial reader
+    publishes ``nmea_sentence`` and its topic driver subscribes to it, both on
+    one ``Ros2NMEADriver`` class): two ends created in two different files,
+    neither of them the file that creates the node, are not a loop.
+    """
+    files = {pub.location.path, sub.location.path}
+    return len(files) == 1 or node.location.path in files

@@ -1,0 +1,62 @@
+"""ROS003 subscription-without-publisher."""
+from __future__ import annotations
+
+from .absence import AbsenceRule
+
+
+class SubscriptionWithoutPublisher(AbsenceRule):
+    """## What it does
+    Checks for topics that are subscribed but that nothing in the analysed
+    workspace publishes.
+
+    ## Why is this bad?
+    The callback never runs. The node waits forever for data that does not
+    come, usually because of a typo in the topic name, a namespace slip
+    (`scan` inside namespace `robot1` is `/robot1/scan`, not `/scan`) or a
+    publisher that was renamed. ROS 2 raises no error for it.
+
+    ## Known problems
+    Topics published by C++ nodes, drivers, simulators, rviz, the command
+    line or bag playback look unpublished. The rule reports only the *odd one
+    out*: a topic of a node whose other subscriptions are fed by the
+    workspace. It stays quiet (unless a near-miss publisher exists) when none
+    of the node's subscriptions has a publisher here (a tool fed from
+    outside), when several nodes subscribe to the topic, or when the
+    workspace only subscribes within the topic's namespace (`/fmu/out/...`).
+    Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
+    `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
+    `/joint_states`, rviz tool topics such as `/initialpose` and
+    `/goal_pose`) are exempt. It also stays quiet when some publisher's topic
+    name could not be resolved and its type does not rule the match out, and
+    when another alternative of the same creation site is connected.
+
+    ## Example
+    ```python
+    class Mapper(Node):
+        def __init__(self):
+            super().__init__('mapper', namespace='robot1')
+            self.create_subscription(LaserScan, '/scan', self.on_scan, 10)
+            self.create_publisher(OccupancyGrid, 'map', 10)
+    # elsewhere, a node in namespace robot1:
+    #     self.create_publisher(LaserScan, 'scan', 10)  -> /robot1/scan
+    ```
+
+    ## Use instead
+    ```python
+    self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+    ```
+
+    ## Options
+    - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): topics
+      published outside the workspace; `*`, `?` and `**` wildcards allowed.
+    - Stub files (`--rosgraph-stubs`) can declare outside endpoints such as C++
+      nodes.
+    """
+
+    code = "ROS003"
+    name = "subscription-without-publisher"
+    level = "warning"
+    precision = "medium"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "a topic is subscribed but nothing publishes it"
+    kind = "subscriptions"
+    missing = "publisher"

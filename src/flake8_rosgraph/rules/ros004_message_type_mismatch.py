@@ -1,0 +1,84 @@
+"""ROS004 message-type-mismatch."""
+from __future__ import annotations
+
+from collections import Counter
+from typing import Iterator
+
+from ..graph.model import PEER_KIND, RosGraph
+from .base import Finding, Rule, RuleConfig
+from .topics import Endpoint, EndpointIndex
+from .vocabulary import NAME_NOUN, VERB, related
+
+#: The kinds that produce a name's data (their type wins a tie): publishers, servers.
+PRODUCERS: tuple[str, ...] = ("publishers", "services", "action_servers")
+
+
+class MessageTypeMismatch(Rule):
+    """## What it does
+    Checks that all publishers and subscriptions of a topic use the same
+    message type, and likewise servers and clients of a service or an action.
+
+    ## Why is this bad?
+    Endpoints with different types on one name never connect: DDS matches
+    topics by name *and* type, so the subscription silently receives nothing
+    (recent ROS 2 versions only log a warning at run time). It is an
+    outright wiring error.
+
+    ## Known problems
+    Only endpoints whose types are known are compared. A node that creates the
+    same endpoint with either type (a run-time choice such as `Twist` on one
+    ROS distribution, `TwistStamped` on another) is not reported when one of
+    its choices agrees. The finding is reported
+    at each endpoint whose type differs from the type most endpoints of the
+    name use (on a tie, the publishers' or servers' type), since that is the
+    side most likely wrong; the other side is the related location.
+
+    ## Example
+    ```python
+    self.create_publisher(String, 'status', 10)                      # node A
+    self.create_subscription(Int32, 'status', self.on_status, 10)    # node B
+    ```
+
+    ## Use instead
+    ```python
+    self.create_subscription(String, 'status', self.on_status, 10)   # node B
+    ```
+
+    ## Options
+    None.
+    """
+
+    code = "ROS004"
+    name = "message-type-mismatch"
+    level = "error"
+    precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "publishers / subscriptions of one topic disagree on the message type (same for services, actions)"
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        index = EndpointIndex.build(graph)
+        for producer in PRODUCERS:
+            consumer = PEER_KIND[producer]
+            for name in sorted(set(index.names(producer)) | set(index.names(consumer))):
+                typed = [ep for ep in (*index.using(producer, name), *index.using(consumer, name))
+                         if ep.entity.type is not None]
+                yield from self._mismatches(sorted(typed, key=lambda ep: ep.sort_key), producer)
+
+    def _mismatches(self, typed: list[Endpoint], producer: str) -> Iterator[Finding]:
+        counts = Counter(ep.entity.type for ep in typed)
+        if len(counts) < 2:
+            return
+        producer_counts = Counter(ep.entity.type for ep in typed if ep.entity.kind == producer)
+        reference = min(counts, key=lambda t: (-counts[t], -producer_counts[t], t))
+        agreeing = [ep for ep in typed if ep.entity.type == reference]
+        # A node that also has an endpoint of the same role with the reference type picks one at run time
+        # (``Twist if distro == 'humble' else TwistStamped``): it can be configured to agree.
+        configurable = {(id(ep.node), ep.entity.kind) for ep in agreeing}
+        for ep in typed:
+            entity = ep.entity
+            if entity.type == reference or (id(ep.node), entity.kind) in configurable:
+                continue
+            # Name the other side when it exists: "subscribed as X but published as Y".
+            witness = next((a for a in agreeing if a.entity.kind != entity.kind), agreeing[0]).entity
+            message = (f"{NAME_NOUN[entity.kind]} '{entity.name}' {VERB[entity.kind]} as '{entity.type}' "
+                       f"but {VERB[witness.kind]} as '{reference}' at {witness.location.short()}")
+            yield Finding(entity.location, self.code, message, tuple(related(a.entity) for a in agreeing))

@@ -1,0 +1,74 @@
+"""ROS005 qos-incompatible."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..graph.model import RosGraph
+from .base import Finding, Rule, RuleConfig
+from .qos_compat import qos_errors
+from .topics import EndpointIndex
+from .vocabulary import related
+
+
+class QosIncompatible(Rule):
+    """## What it does
+    Checks every publisher / subscription pair of a topic for QoS policies the
+    middleware refuses to match — exactly the *error* cases of rmw_dds_common's
+    `qos_profile_check_compatible`:
+
+    - best-effort publisher, reliable subscription;
+    - volatile publisher, transient-local subscription;
+    - subscription with a deadline, publisher without one, or with a longer one;
+    - automatic-liveliness publisher, manual-by-topic subscription;
+    - subscription with a liveliness lease duration, publisher without one, or
+      with a longer one.
+
+    ## Why is this bad?
+    The two endpoints never connect. At run time ROS 2 only fires an
+    "incompatible QoS" event (a log line, if anybody listens); the subscription
+    just receives nothing. A classic case is subscribing reliably to a sensor
+    driver that publishes with `qos_profile_sensor_data` (best effort).
+
+    ## Known problems
+    Only policies the analysis determined are compared: a policy left out of
+    the extracted QoS (unknown, or left at its default) never causes a
+    finding, so a volatile publisher created with a plain depth (`10`) is not
+    compared with a transient-local subscription. The finding is at the
+    subscription, which requests more than the publisher offers; the publisher
+    is the related location.
+
+    ## Example
+    ```python
+    self.create_publisher(LaserScan, 'scan', qos_profile_sensor_data)          # driver
+    self.create_subscription(LaserScan, 'scan', self.on_scan,
+                             QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE))
+    ```
+
+    ## Use instead
+    ```python
+    self.create_subscription(LaserScan, 'scan', self.on_scan, qos_profile_sensor_data)
+    ```
+
+    ## Options
+    None.
+    """
+
+    code = "ROS005"
+    name = "qos-incompatible"
+    level = "error"
+    precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "a publisher and a subscription of one topic have QoS that the middleware will refuse to match"
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        index = EndpointIndex.build(graph)
+        for sub in index.endpoints("subscriptions"):
+            if not sub.entity.qos:
+                continue
+            for pub in index.peers(sub):
+                if not pub.entity.qos:
+                    continue
+                errors = qos_errors(pub.entity.qos, sub.entity.qos)
+                if errors:
+                    message = (f"QoS of subscription to '{sub.entity.name}' cannot match the publisher at "
+                               f"{pub.entity.location.short()}: {'; '.join(errors)}")
+                    yield Finding(sub.entity.location, self.code, message, (related(pub.entity),))

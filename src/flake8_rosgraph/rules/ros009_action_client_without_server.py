@@ -1,0 +1,50 @@
+"""ROS009 action-client-without-server."""
+from __future__ import annotations
+
+from .absence import AbsenceRule
+
+
+class ActionClientWithoutServer(AbsenceRule):
+    """## What it does
+    Checks for action clients whose action no node of the analysed workspace
+    serves.
+
+    ## Why is this bad?
+    `wait_for_server()` blocks forever and goals are never accepted. The cause
+    is usually a misspelt action name or a server in another namespace.
+
+    ## Known problems
+    Actions served by C++ nodes (Nav2's `navigate_to_pose`, MoveIt's
+    `move_action`, controllers' `follow_joint_trajectory`) look unserved;
+    declare them as external names. The rule reports only an action client of
+    a node whose other action clients reach servers of the workspace; it
+    stays quiet (unless a near-miss server exists) when none of them does,
+    when several nodes use the action, or when the workspace only uses
+    actions of the action's namespace in this role. It also stays quiet when
+    some action server's name could not be resolved and its type does not
+    rule the match out.
+
+    ## Example
+    ```python
+    ActionServer(self, Fibonacci, 'fibonacci', self.execute)   # server node
+    ActionClient(self, Fibonacci, 'fibonaci')                   # client node
+    ```
+
+    ## Use instead
+    ```python
+    ActionClient(self, Fibonacci, 'fibonacci')
+    ```
+
+    ## Options
+    - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): also takes
+      action names served outside the workspace.
+    - Stub files (`--rosgraph-stubs`) can declare outside servers.
+    """
+
+    code = "ROS009"
+    name = "action-client-without-server"
+    level = "warning"
+    precision = "medium"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "an action client's action has no server"
+    kind = "action_clients"
+    missing = "server"

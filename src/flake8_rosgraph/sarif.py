@@ -1,0 +1,327 @@
+"""SARIF 2.1.0 output, shaped for GitHub code scanning.
+
+Both front ends produce the same log: ``flake8 --rosgraph-sarif FILE`` (every
+code flake8 reported after its filters) and ``flake8-rosgraph check --sarif
+FILE`` (the ROS codes). What GitHub reads is always there: the driver's name,
+``semanticVersion`` and ``informationUri``; for each rule ``shortDescription``,
+``fullDescription``, ``help`` (text and markdown, from the rule's ruff-style
+docstring), ``defaultConfiguration.level`` and ``properties`` (``tags``,
+``precision``, ``problem.severity``); for each result ``ruleId``, ``ruleIndex``,
+``level``, a message that links its ``relatedLocations`` (``[label](1)``), a
+region with 1-based character columns (``columnKind: unicodeCodePoints``),
+repository-relative URIs under ``%SRCROOT%`` and ``partialFingerprints`` that
+depend on no absolute path and no line number; ``automationDetails.id`` names
+the category. Codes of other flake8 plugins get a rule entry with what is known
+of them (the plugin's name and version).
+
+This is the only module that imports ``sarif_om`` / ``jschema_to_python``.
+"""
+from __future__ import annotations
+
+import hashlib
+import inspect
+import json
+import os
+import re
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Iterable, Mapping, Sequence
+from urllib.parse import quote
+
+import sarif_om as om
+from jschema_to_python.to_json import to_json
+
+from . import __version__
+from .graph.model import Diagnostic
+from .options import INTERNAL_ERROR_CODE
+from .rules.base import Finding
+
+TOOL_NAME = "flake8-rosgraph"
+INFORMATION_URI = "https://github.com/flake8-rosgraph/flake8-rosgraph"
+SCHEMA_URI = "https://json.schemastore.org/sarif-2.1.0.json"
+SRCROOT = "%SRCROOT%"
+FINGERPRINT_KEY = "rosgraphFinding/v1"
+
+#: GitHub's ``problem.severity`` for each SARIF level.
+_SEVERITY = {"error": "error", "warning": "warning", "note": "recommendation"}
+#: Precision when a rule does not declare one: the louder the level, the surer the rule must be.
+_PRECISION = {"error": "high", "warning": "medium", "note": "low"}
+_LINE_REF = re.compile(r"(\.[A-Za-z]+):\d+\b")
+
+
+@dataclass(frozen=True, order=True)
+class Place:
+    """A position in a file: absolute path, 1-based line and 1-based character column."""
+
+    path: Path
+    line: int
+    column: int
+
+
+@dataclass(frozen=True, order=True)
+class Problem:
+    """One reported problem, whichever tool found it; ``related`` holds (place, label) pairs."""
+
+    place: Place
+    code: str
+    message: str
+    related: tuple[tuple[Place, str], ...] = ()
+
+
+def finding_problem(root: Path, finding: Finding) -> Problem:
+    """A rule finding (root-relative locations) as a :class:`Problem` (absolute paths)."""
+
+    def place(location: Any) -> Place:
+        return Place(Path(root, location.path), location.line, location.column)
+
+    related = tuple((place(location), label) for location, label in finding.related)
+    return Problem(place(finding.location), finding.code, finding.message, related)
+
+
+@dataclass(frozen=True)
+class Origin:
+    """The flake8 plugin behind a code that is not ours."""
+
+    name: str
+    version: str
+
+
+@dataclass(frozen=True)
+class RuleInfo:
+    """What a SARIF rule entry says; built from a ``Rule`` or from what is known of a foreign code."""
+
+    code: str
+    name: str
+    level: str
+    summary: str
+    doc: str
+    enabled: bool = True
+    precision: str | None = None
+    tags: tuple[str, ...] = ()
+
+
+def rule_info(rule: Any) -> RuleInfo:
+    """The SARIF view of a :class:`~flake8_rosgraph.rules.base.Rule` instance."""
+    family = {"0": "graph-wiring", "1": "rclpy-misuse", "2": "launch"}.get(rule.code[3:4], "ros")
+    return RuleInfo(
+        code=rule.code, name=rule.name, level=rule.level, summary=rule.summary,
+        doc=inspect.cleandoc(type(rule).__doc__ or rule.summary),
+        enabled=bool(rule.default_enabled), precision=getattr(rule, "precision", None),
+        tags=("ros2", family),
+    )
+
+
+INTERNAL_ERROR_RULE = RuleInfo(
+    code=INTERNAL_ERROR_CODE, name="internal-error", level="error",
+    summary="flake8-rosgraph failed; the graph rules did not run",
+    doc=("## What it does\nReports that flake8-rosgraph itself failed, instead of crashing flake8.\n\n"
+         "## Why is this bad?\nThe ROS graph rules did not run, so their silence proves nothing.\n\n"
+         "## Use instead\nRun again with `--rosgraph-debug` (or `ROSGRAPH_DEBUG=1`) to see the "
+         "traceback, and report it."),
+    precision="high", tags=("ros2", "tool"),
+)
+
+
+def catalogue() -> list[RuleInfo]:
+    """Every ROS rule, in code order, with the internal-error pseudo-rule first."""
+    from .rules import RULES
+
+    return [INTERNAL_ERROR_RULE, *(rule_info(rule) for rule in RULES)]
+
+
+def foreign_rule(code: str, origin: Origin | None) -> RuleInfo:
+    """What is known of another plugin's code: its plugin, if flake8 told us."""
+    source = f"{origin.name} {origin.version}" if origin else "a flake8 plugin"
+    return RuleInfo(
+        code=code, name=code, level="warning", summary=f"{code}, reported by {source} through flake8",
+        doc=f"`{code}` is reported by {source}; see that plugin's documentation.",
+        tags=("flake8",) + ((origin.name,) if origin else ()),
+    )
+
+
+def _sections(doc: str) -> dict[str, str]:
+    sections: dict[str, str] = {}
+    current = ""
+    for line in doc.splitlines():
+        if line.startswith("## "):
+            current = line[3:].strip()
+            sections[current] = ""
+        else:
+            sections[current] = sections.get(current, "") + line + "\n"
+    return {name: text.strip() for name, text in sections.items()}
+
+
+def _plain(markdown: str) -> str:
+    """Markdown to readable plain text: headings lose their ``#``, fences disappear."""
+    lines = [line[3:] if line.startswith("## ") else line
+             for line in markdown.splitlines() if not line.startswith("```")]
+    return "\n".join(lines).strip()
+
+
+def _escape(text: str) -> str:
+    """SARIF message text: literal brackets must be escaped, or they read as links."""
+    return text.replace("\\", "\\\\").replace("[", "\\[").replace("]", "\\]")
+
+
+def _descriptor(info: RuleInfo) -> om.ReportingDescriptor:
+    what = _sections(info.doc).get("What it does") or info.summary
+    properties = om.PropertyBag(tags=list(info.tags))
+    setattr(properties, "precision", info.precision or _PRECISION[info.level])
+    setattr(properties, "problem.severity", _SEVERITY[info.level])
+    return om.ReportingDescriptor(
+        id=info.code,
+        name=info.name,
+        short_description=om.MultiformatMessageString(text=info.summary[:1].upper() + info.summary[1:]),
+        full_description=om.MultiformatMessageString(text=" ".join(what.split())),
+        help=om.MultiformatMessageString(text=_plain(info.doc), markdown=info.doc),
+        default_configuration=om.ReportingConfiguration(level=info.level, enabled=info.enabled),
+        properties=properties,
+    )
+
+
+class _Artifacts:
+    """URIs relative to the source root, and the stripped text of source lines for fingerprints."""
+
+    def __init__(self, srcroot: Path) -> None:
+        self.srcroot = Path(os.path.abspath(srcroot))
+        self._lines: dict[Path, list[str]] = {}
+
+    def location(self, path: Path) -> om.ArtifactLocation:
+        path = Path(os.path.abspath(path))
+        try:
+            relative = path.relative_to(self.srcroot)
+        except ValueError:
+            return om.ArtifactLocation(uri=path.as_uri())
+        return om.ArtifactLocation(uri=quote(relative.as_posix()), uri_base_id=SRCROOT)
+
+    def uri(self, path: Path) -> str:
+        return self.location(path).uri
+
+    def line_text(self, place: Place) -> str:
+        if place.path not in self._lines:
+            try:
+                self._lines[place.path] = place.path.read_text(encoding="utf-8", errors="replace").splitlines()
+            except OSError:
+                self._lines[place.path] = []
+        lines = self._lines[place.path]
+        return lines[place.line - 1].strip() if 0 < place.line <= len(lines) else ""
+
+
+def _physical(artifacts: _Artifacts, place: Place) -> om.PhysicalLocation:
+    return om.PhysicalLocation(
+        artifact_location=artifacts.location(place.path),
+        region=om.Region(start_line=max(place.line, 1), start_column=max(place.column, 1)),
+    )
+
+
+def _fingerprint(artifacts: _Artifacts, problem: Problem, occurrence: int) -> str:
+    """Stable across runs and machines: no absolute path, no line number, only what the problem is."""
+    parts = [problem.code, artifacts.uri(problem.place.path), _LINE_REF.sub(r"\1", problem.message),
+             artifacts.line_text(problem.place), str(occurrence)]
+    parts += sorted(f"{artifacts.uri(place.path)}\0{label}" for place, label in problem.related)
+    return hashlib.sha256("\0".join(parts).encode()).hexdigest()[:32]
+
+
+def _message(problem: Problem) -> om.Message:
+    text = _escape(problem.message)
+    if problem.related:
+        links = ", ".join(f"[{_escape(label)}]({index})" for index, (_, label) in enumerate(problem.related, 1))
+        text += f" Related: {links}."
+    return om.Message(text=text)
+
+
+def _notification(artifacts: _Artifacts, root: Path, diagnostic: Diagnostic) -> om.Notification:
+    place = Place(root / diagnostic.path, diagnostic.line, 1)
+    level = diagnostic.severity if diagnostic.severity in _SEVERITY else "warning"
+    return om.Notification(message=om.Message(text=diagnostic.message), level=level,
+                           locations=[om.Location(physical_location=_physical(artifacts, place))])
+
+
+def sarif_log(
+    problems: Iterable[Problem],
+    rules: Sequence[RuleInfo],
+    *,
+    srcroot: Path,
+    category: str,
+    origins: Mapping[str, Origin] | None = None,
+    diagnostics: Iterable[tuple[Path, Diagnostic]] = (),
+) -> dict[str, Any]:
+    """The SARIF log (as JSON-ready data) of ``problems``.
+
+    ``rules`` is the catalogue to describe (every ROS rule, whether it fired or
+    not); codes outside it get a :func:`foreign_rule` entry using ``origins``
+    (plugin by code prefix). ``diagnostics`` (workspace root, analysis gap)
+    become tool execution notifications.
+    """
+    origins = origins or {}
+    problems = sorted(set(problems))
+    infos = list(rules)
+    known = {info.code for info in infos}
+    for code in sorted({p.code for p in problems} - known):
+        infos.append(foreign_rule(code, _origin_for(code, origins)))
+    index = {info.code: i for i, info in enumerate(infos)}
+    artifacts = _Artifacts(srcroot)
+
+    results = []
+    levels = []
+    seen: Counter[tuple[str, str, str, str]] = Counter()
+    for problem in problems:
+        info = infos[index[problem.code]]
+        identity = (problem.code, artifacts.uri(problem.place.path), problem.message,
+                    artifacts.line_text(problem.place))
+        seen[identity] += 1
+        related = [
+            om.Location(id=i, physical_location=_physical(artifacts, place), message=om.Message(text=label))
+            for i, (place, label) in enumerate(problem.related, 1)
+        ]
+        results.append(om.Result(
+            rule_id=problem.code, rule_index=index[problem.code], level=info.level,
+            message=_message(problem),
+            locations=[om.Location(physical_location=_physical(artifacts, problem.place))],
+            related_locations=related or None,
+            partial_fingerprints={FINGERPRINT_KEY: _fingerprint(artifacts, problem, seen[identity])},
+        ))
+        levels.append(info.level)
+
+    notifications = [_notification(artifacts, root, d) for root, d in
+                     sorted(set(diagnostics), key=lambda rd: (str(rd[0]), rd[1]))]
+    run = om.Run(
+        tool=om.Tool(driver=om.ToolComponent(
+            name=TOOL_NAME, semantic_version=__version__, version=__version__,
+            information_uri=INFORMATION_URI, rules=[_descriptor(info) for info in infos],
+        )),
+        automation_details=om.RunAutomationDetails(id=f"{category}/"),
+        column_kind="unicodeCodePoints",
+        original_uri_base_ids={SRCROOT: om.ArtifactLocation(uri=artifacts.srcroot.as_uri() + "/")},
+        invocations=[om.Invocation(execution_successful=True,
+                                   tool_execution_notifications=notifications or None)],
+        results=results,
+    )
+    log = json.loads(to_json(om.SarifLog(version="2.1.0", schema_uri=SCHEMA_URI, runs=[run])))
+    # to_json drops values equal to the schema default ("warning"), but GitHub
+    # reads levels literally: put them back.
+    driver = log["runs"][0]["tool"]["driver"]
+    for descriptor, info in zip(driver["rules"], infos):
+        descriptor["defaultConfiguration"]["level"] = info.level
+    for result, level in zip(log["runs"][0]["results"], levels):
+        result["level"] = level
+    return log
+
+
+def _origin_for(code: str, origins: Mapping[str, Origin]) -> Origin | None:
+    prefixes = [prefix for prefix in origins if code.startswith(prefix)]
+    return origins[max(prefixes, key=len)] if prefixes else None
+
+
+def dumps(log: Mapping[str, Any]) -> str:
+    """The log as deterministic JSON text."""
+    return json.dumps(log, indent=2, ensure_ascii=False) + "\n"
+
+
+def write(path: Path, log: Mapping[str, Any]) -> None:
+    """Write the log to ``path`` (parent directories created)."""
+    path = Path(path)
+    if path.parent != Path():
+        path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(dumps(log), encoding="utf-8")

@@ -1,0 +1,2 @@
+"""Topic names the driver shares with its consumers."""
+DATA_TOPIC = 'imu/data'

@@ -1,0 +1,141 @@
+"""The on-disk workspace cache: keys, invalidation, corruption, concurrency."""
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+from pathlib import Path
+
+import pytest
+
+from flake8_rosgraph import cache
+from flake8_rosgraph.options import Settings
+
+from .conftest import RAW_STANDARD, analyses
+
+SETTINGS = Settings()
+
+
+def test_key_is_stable_and_follows_content_and_options(workspace: Path) -> None:
+    key = cache.cache_key(workspace, SETTINGS)
+    assert cache.cache_key(workspace, SETTINGS) == key
+    assert cache.cache_key(workspace, Settings(external_topics=("/orphan",))) != key
+    talker = workspace / "src/pkg_a/pkg_a/talker.py"
+    talker.write_text(talker.read_text() + "# edited\n")
+    edited = cache.cache_key(workspace, SETTINGS)
+    assert edited != key
+    (workspace / "src/pkg_a/launch").mkdir()
+    (workspace / "src/pkg_a/launch/demo.launch.py").write_text("")
+    assert cache.cache_key(workspace, SETTINGS) != edited
+
+
+def test_key_follows_stub_file_content(workspace: Path, tmp_path: Path) -> None:
+    stub = tmp_path / "extra.toml"
+    stub.write_text("[a]\n")
+    settings = Settings(stub_files=(stub,))
+    key = cache.cache_key(workspace, settings)
+    stub.write_text("[b]\n")
+    assert cache.cache_key(workspace, settings) != key
+
+
+def test_key_ignores_caches_hidden_and_colcon_ignored_folders(workspace: Path) -> None:
+    key = cache.cache_key(workspace, SETTINGS)
+    for folder in (".rosgraph-cache", ".git", "build", "src/__pycache__"):
+        (workspace / folder).mkdir(parents=True, exist_ok=True)
+        (workspace / folder / "x.py").write_text("x = 1\n")
+    (workspace / "build" / "COLCON_IGNORE").write_text("")
+    assert cache.cache_key(workspace, SETTINGS) == key
+
+
+def _found(report: cache.WorkspaceReport) -> list[tuple[str, int, int, str]]:
+    return sorted((f.location.path, f.location.line, f.location.column, f.code) for f in report.findings
+                  if f.code in {"ROS001", "ROS002", "ROS003"})
+
+
+def test_second_lookup_reads_the_cache_and_an_edit_rebuilds(fake_engine: Path, workspace: Path) -> None:
+    first = cache.load_or_build(workspace, SETTINGS)
+    assert _found(first) == RAW_STANDARD
+    assert cache.load_or_build(workspace, SETTINGS) == first
+    assert len(analyses(fake_engine)) == 1
+    listener = workspace / "src/pkg_b/pkg_b/listener.py"
+    listener.write_text(listener.read_text().replace("'nobody'", "'orphan'"))
+    rebuilt = cache.load_or_build(workspace, SETTINGS)
+    assert len(analyses(fake_engine)) == 2
+    assert _found(rebuilt) == [("src/pkg_a/pkg_a/talker.py", 7, 10, "ROS002"),
+                               ("src/pkg_b/pkg_b/listener.py", 6, 10, "ROS003")]
+
+
+def test_related_locations_survive_the_round_trip(fake_engine: Path, workspace: Path) -> None:
+    built = cache.load_or_build(workspace, SETTINGS)
+    loaded = cache.load_or_build(workspace, SETTINGS)
+    loop = [f for f in loaded.findings if f.code == "ROS002"]
+    assert loop and loop[0].related[0][0].line == 8
+    assert loaded == built
+
+
+@pytest.mark.parametrize("damage", ["{not json", "[]", '{"format": 1}', ""])
+def test_corrupt_entry_is_ignored_and_replaced(fake_engine: Path, workspace: Path, damage: str) -> None:
+    cache.load_or_build(workspace, SETTINGS)
+    entry = workspace / cache.CACHE_DIR_NAME / f"{cache.cache_key(workspace, SETTINGS)}.json"
+    entry.write_text(damage)
+    report = cache.load_or_build(workspace, SETTINGS)
+    assert _found(report) == RAW_STANDARD
+    assert len(analyses(fake_engine)) == 2
+    assert json.loads(entry.read_text())["format"] == cache.ENTRY_FORMAT
+
+
+def test_entry_stored_under_another_key_is_not_trusted(fake_engine: Path, workspace: Path) -> None:
+    cache.load_or_build(workspace, SETTINGS)
+    key = cache.cache_key(workspace, SETTINGS)
+    entry = workspace / cache.CACHE_DIR_NAME / f"{key}.json"
+    data = json.loads(entry.read_text())
+    data["key"] = "0" * 64
+    entry.write_text(json.dumps(data))
+    cache.load_or_build(workspace, SETTINGS)
+    assert len(analyses(fake_engine)) == 2
+
+
+def test_cache_directory_is_marked_and_left_clean(fake_engine: Path, workspace: Path) -> None:
+    cache.load_or_build(workspace, SETTINGS)
+    folder = workspace / cache.CACHE_DIR_NAME
+    assert (folder / ".gitignore").read_text().splitlines()[-1] == "*"
+    assert (folder / "COLCON_IGNORE").exists()
+    assert (folder / "CACHEDIR.TAG").read_text().startswith("Signature: 8a477f597d28d172789f06886806bc55")
+    assert not list(folder.glob(".tmp-*"))
+
+
+def test_unwritable_cache_location_still_gives_the_findings(fake_engine: Path, workspace: Path,
+                                                            tmp_path: Path) -> None:
+    blocker = tmp_path / "a-file"
+    blocker.write_text("")
+    settings = Settings(cache_dir=blocker / "cache")  # cannot be created: its parent is a file
+    assert _found(cache.load_or_build(workspace, settings)) == RAW_STANDARD
+
+
+def test_old_entries_are_pruned(fake_engine: Path, workspace: Path) -> None:
+    for n in range(cache.KEEP_ENTRIES + 3):
+        cache.load_or_build(workspace, Settings(external_topics=(f"/t{n}",)))
+    assert len(list((workspace / cache.CACHE_DIR_NAME).glob("[0-9a-f]*.json"))) == cache.KEEP_ENTRIES
+
+
+def _worker(root: str, log: str, barrier: multiprocessing.synchronize.Barrier, out: multiprocessing.Queue) -> None:
+    os.environ["FAKE_ROSGRAPH_LOG"] = log
+    os.environ["FAKE_ROSGRAPH_DELAY"] = "0.5"
+    barrier.wait()
+    report = cache.load_or_build(Path(root), SETTINGS)
+    out.put(_found(report))
+
+
+def test_concurrent_processes_analyse_once(fake_engine: Path, workspace: Path) -> None:
+    context = multiprocessing.get_context("fork")
+    barrier = context.Barrier(4)
+    out = context.Queue()
+    workers = [context.Process(target=_worker, args=(str(workspace), str(fake_engine), barrier, out))
+               for _ in range(4)]
+    for worker in workers:
+        worker.start()
+    results = [out.get(timeout=60) for _ in workers]
+    for worker in workers:
+        worker.join(timeout=60)
+    assert results == [RAW_STANDARD] * 4
+    assert len(analyses(fake_engine)) == 1
