@@ -12,7 +12,7 @@ from typing import Any, Iterable
 
 from flake8_rosgraph.graph.model import Entity, Location, RosGraph, RosNode
 from flake8_rosgraph.rules import RuleConfig, run_rules
-from flake8_rosgraph.rules.base import Finding, Rule
+from flake8_rosgraph.rules.base import Finding
 
 STRING = "std_msgs/msg/String"
 
@@ -54,13 +54,9 @@ def graph(*nodes: RosNode) -> RosGraph:
     return RosGraph(nodes=list(nodes))
 
 
-def findings(g: RosGraph, select: Iterable[str] | None = None, external: Iterable[str] = (),
-             rule: Rule | None = None) -> list[Finding]:
-    """The findings of all default rules (or ``select``, or one ``rule`` instance) on ``g``."""
-    config = RuleConfig(external_names=frozenset(external))
-    if rule is not None:
-        return sorted(set(rule.check(g, config)))
-    return run_rules(g, config, select)
+def findings(g: RosGraph, select: Iterable[str] | None = None, external: Iterable[str] = ()) -> list[Finding]:
+    """The findings of the default rules (or of the ``select``-ed ones) on ``g``."""
+    return run_rules(g, RuleConfig(external_names=frozenset(external)), select)
 
 
 def report(g: RosGraph, **kw: Any) -> list[str]:

@@ -86,7 +86,7 @@ class AbsenceRule(Rule):
         for endpoint in dangling:
             name = endpoint.entity.name
             interface = (id(endpoint.node) not in wired
-                         or index.node_count(self.kind, name) > 1
+                         or index.node_counts[(self.kind, name)] > 1
                          or namespace_of(name) in one_way)
             yield from self._report(endpoint, near_misses, interface)
 

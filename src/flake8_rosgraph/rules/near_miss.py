@@ -26,12 +26,30 @@ from .topics import Endpoint, types_compatible
 
 #: Names at least this long tolerate an edit distance of 2 instead of 1.
 LONG_NAME = 10
+#: The largest edit distance any lookup tolerates (that of long names).
+MAX_DISTANCE = 2
 
 _NUMBER = re.compile(r"\d+")
 
 
 def _basename(name: str) -> str:
     return name.rsplit("/", 1)[-1]
+
+
+def _deletions(word: str, depth: int) -> set[str]:
+    """``word`` and every string made from it by deleting up to ``depth`` characters.
+
+    Two strings within Levenshtein distance *k* always share such a variant
+    with at most *k* deletions on each side (delete the substituted and the
+    inserted characters), so matching variants finds every candidate without
+    comparing all pairs of names.
+    """
+    variants = {word}
+    frontier = {word}
+    for _ in range(depth):
+        frontier = {w[:i] + w[i + 1:] for w in frontier for i in range(len(w))}
+        variants |= frontier
+    return variants
 
 
 @dataclass(frozen=True)
@@ -45,17 +63,18 @@ class NearMiss:
 class NearMissFinder:
     """Looks up near misses among the dangling peers of one kind.
 
-    Built once per rule run from the dangling peer names; each lookup compares
-    against names of nearby length and the names sharing the last component,
-    not against every dangling name in the workspace.
+    Built once per rule run from the dangling peer names (indexed by their
+    deletion variants and by their last component), so a lookup touches only
+    plausible candidates, never every dangling name of the workspace.
     """
 
     def __init__(self, dangling_peers: dict[str, Sequence[Endpoint]]) -> None:
         self._peers = dangling_peers
-        self._by_length: dict[int, list[str]] = defaultdict(list)
+        self._by_variant: dict[str, set[str]] = defaultdict(set)
         self._by_basename: dict[str, list[str]] = defaultdict(list)
         for name in sorted(dangling_peers):
-            self._by_length[len(name)].append(name)
+            for variant in _deletions(name, MAX_DISTANCE):
+                self._by_variant[variant].add(name)
             self._by_basename[_basename(name)].append(name)
 
     def find(self, endpoint: Endpoint) -> NearMiss | None:
@@ -63,13 +82,14 @@ class NearMissFinder:
         name = endpoint.entity.name
         if name is None:
             return None
-        limit = 1 if len(name) < LONG_NAME else 2
+        limit = 1 if len(name) < LONG_NAME else MAX_DISTANCE
         candidates: dict[str, int] = {}
-        for length in range(len(name) - limit, len(name) + limit + 1):
-            for other in self._by_length.get(length, ()):
-                distance = edit_distance(name, other, limit)
-                if distance <= limit:
-                    candidates[other] = distance
+        for variant in _deletions(name, limit):
+            for other in self._by_variant.get(variant, ()):
+                if other not in candidates:
+                    distance = edit_distance(name, other, limit)
+                    if distance <= limit:
+                        candidates[other] = distance
         for other in self._by_basename.get(_basename(name), ()):
             candidates.setdefault(other, edit_distance(name, other, len(name) + len(other)))
         ranked = sorted((distance, other) for other, distance in candidates.items()

@@ -50,8 +50,6 @@ class PublisherWithoutSubscriber(AbsenceRule):
     ## Options
     - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): topics consumed
       outside the workspace; `*`, `?` and `**` wildcards allowed.
-    - Stub files (`--rosgraph-stubs`) can declare outside endpoints such as C++
-      nodes.
     """
 
     code = "ROS001"

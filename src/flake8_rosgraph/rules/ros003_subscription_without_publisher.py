@@ -49,8 +49,6 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     ## Options
     - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): topics
       published outside the workspace; `*`, `?` and `**` wildcards allowed.
-    - Stub files (`--rosgraph-stubs`) can declare outside endpoints such as C++
-      nodes.
     """
 
     code = "ROS003"

@@ -41,7 +41,6 @@ class ServiceClientWithoutServer(AbsenceRule):
     ## Options
     - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): also takes
       service names served outside the workspace.
-    - Stub files (`--rosgraph-stubs`) can declare outside servers.
     """
 
     code = "ROS008"

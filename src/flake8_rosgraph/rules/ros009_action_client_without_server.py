@@ -38,7 +38,6 @@ class ActionClientWithoutServer(AbsenceRule):
     ## Options
     - `--rosgraph-external-topics` (`ROSGRAPH_EXTERNAL_TOPICS`): also takes
       action names served outside the workspace.
-    - Stub files (`--rosgraph-stubs`) can declare outside servers.
     """
 
     code = "ROS009"

@@ -50,6 +50,8 @@ class EndpointIndex:
     """Named endpoints by (kind, resolved name), plus what is known of the unresolved ones."""
 
     by_name: dict[tuple[str, str], list[Endpoint]] = field(default_factory=dict)
+    #: How many distinct nodes use each (kind, name); nodes of one fully qualified name count once.
+    node_counts: dict[tuple[str, str], int] = field(default_factory=dict)
     #: The message types (``None`` = unknown) of the unresolved endpoints, by kind.
     unresolved_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
 
@@ -66,7 +68,8 @@ class EndpointIndex:
                 by_name[(entity.kind, entity.name)].append(Endpoint(node, entity))
         for endpoints in by_name.values():
             endpoints.sort(key=lambda ep: ep.sort_key)
-        return cls(dict(by_name), {kind: frozenset(types) for kind, types in unresolved_types.items()})
+        node_counts = {key: len({_node_key(ep.node) for ep in eps}) for key, eps in by_name.items()}
+        return cls(dict(by_name), node_counts, {kind: frozenset(types) for kind, types in unresolved_types.items()})
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         """All resolved endpoints of one kind, in source order."""
@@ -80,10 +83,6 @@ class EndpointIndex:
     def using(self, kind: str, name: str) -> list[Endpoint]:
         """Endpoints of ``kind`` on ``name`` (empty when none)."""
         return self.by_name.get((kind, name), [])
-
-    def node_count(self, kind: str, name: str) -> int:
-        """How many distinct nodes use ``name`` with ``kind`` (nodes of one fully qualified name count once)."""
-        return len({_node_key(ep.node) for ep in self.using(kind, name)})
 
     def one_way_namespaces(self, kind: str) -> frozenset[str]:
         """Namespaces other than ``/`` holding two or more names used with ``kind`` and none used with its peer.
