@@ -40,6 +40,7 @@ class Rule:
     name: ClassVar[str]
     level: ClassVar[str]  # "error" | "warning" | "note"
     summary: ClassVar[str]
+    precision: ClassVar[str]  # SARIF precision: "very-high" | "high" | "medium" | "low"
     default_enabled: ClassVar[bool] = True
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
