@@ -59,30 +59,37 @@ class Interpreter:
     def run_task(self, task: Task) -> tuple[Value, dict]:
         if task[0] == "mod":
             module = self.program.modules[task[1]]
-            if module.cfg is None:
-                from .cfg import build_cfg
-                module.cfg = build_cfg(module.tree.body)
             frame = Frame(task, module)
-            cfg, env = module.cfg, {}
+            env: Env = {}
         else:
             func = self.program.functions[task[1]]
             frame = Frame(task, func.module, func)
-            cfg = func.cfg
             env = dict(zip(self.param_names(func), task[2]))
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame
         try:
-            self.run_cfg(cfg, env)
+            self.run_cfg(self._cfg_of(frame), env)
             ret = frame.ret
         except RecursionError:
-            self._diag(frame, "expression nested too deeply to analyse; treated as unknown")
+            # Statements or expressions nested deeper than a recursive walk can follow.
+            self._diag(frame, f"{self._scope_name(frame)} is nested too deeply to analyse; "
+                              "its results are unknown")
             ret = TOP
         finally:
             self.frame = outer
         if frame.func is not None and frame.func.is_generator:
             ret = TOP
         return ret, frame.effects
+
+    @staticmethod
+    def _cfg_of(frame: Frame) -> CFG:
+        if frame.func is not None:
+            return frame.func.cfg
+        if frame.module.cfg is None:
+            from .cfg import build_cfg
+            frame.module.cfg = build_cfg(frame.module.tree.body)
+        return frame.module.cfg
 
     def _diag(self, frame: Frame, message: str) -> None:
         from .engine import Diagnostic

@@ -1,0 +1,179 @@
+"""The measured steps on one workspace, and running them round-robin.
+
+Steps: interpreter start-up (the fixed cost of every subprocess row), ``ast.parse``
+of every file in-process (the floor: no checker can avoid reading and parsing),
+pyflakes, flake8 ``-j1`` without the plugin, flake8 ``-j1`` with it (cold: its
+cache removed; warm: cache present, nothing changed; one file changed: one
+file's content edited, so the cache key misses), and the standalone ``graph``
+command. All subprocess steps run in the interpreter running the benchmark.
+
+Each repetition runs every step once, in this order, so that slow drift in
+machine load (other work on the same host) hits all steps alike instead of
+whichever step happens to run last.
+"""
+from __future__ import annotations
+
+import ast
+import json
+import os
+import re
+import shutil
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Sequence
+
+from flake8_rosgraph.cache import CACHE_DIR_NAME
+
+from measure import CommandFailed, Sample, Summary, run_command
+
+#: The distribution whose flake8 plugin is measured.
+PLUGIN_DIST = "flake8-rosgraph"
+LAUNCHER = Path(__file__).resolve().parent / "flake8_launcher.py"
+#: flake8's default ``--exclude`` (directories), so the floor parses the files flake8 checks.
+FLAKE8_EXCLUDED = frozenset({".svn", "CVS", ".bzr", ".hg", ".git", "__pycache__", ".tox", ".nox", ".eggs"})
+#: flake8 and pyflakes exit 1 when they report something; that is success here.
+CHECKER_OK = frozenset({0, 1})
+_ROS_CODE = re.compile(r":\d+:\d+: ROS\d{3} ")
+
+
+@dataclass(frozen=True)
+class Corpus:
+    """The Python files of a workspace, as flake8 would find them."""
+
+    root: Path
+    files: tuple[Path, ...]
+    lines: int
+
+    @classmethod
+    def scan(cls, root: Path) -> Corpus:
+        files = []
+        for directory, dirnames, filenames in os.walk(root):
+            dirnames[:] = sorted(d for d in dirnames
+                                 if d not in FLAKE8_EXCLUDED and not d.endswith(".egg"))
+            files += [Path(directory, name) for name in sorted(filenames) if name.endswith(".py")]
+        lines = sum(len(path.read_bytes().splitlines()) for path in files)
+        return cls(root, tuple(sorted(files)), lines)
+
+
+@dataclass(frozen=True)
+class Step:
+    """One measured action. ``measure`` gets the repetition number (0, 1, …)."""
+
+    key: str
+    label: str
+    measure: Callable[[int], Sample]
+    describe: Callable[[str], str]
+
+
+def run_steps(steps: Sequence[Step], runs: int) -> dict[str, Summary]:
+    """Every step ``runs`` times, round-robin; summaries by step key, in step order."""
+    samples: dict[str, list[Sample]] = {step.key: [] for step in steps}
+    for repetition in range(runs):
+        for step in steps:
+            samples[step.key].append(step.measure(repetition))
+    return {step.key: Summary(step.label, tuple(samples[step.key])) for step in steps}
+
+
+def _count_reported(stdout: str) -> str:
+    lines = stdout.splitlines()
+    ros = sum(1 for line in lines if _ROS_CODE.search(line))
+    return f"{len(lines)} reported, {ros} ROS"
+
+
+def _describe_graph(stdout: str) -> str:
+    graph = json.loads(stdout)
+    return f"{len(graph['nodes'])} nodes, {len(graph['diagnostics'])} diagnostics"
+
+
+class WorkspaceBench:
+    """Builds the steps for one workspace directory (which it may edit: give it a copy)."""
+
+    def __init__(self, corpus: Corpus, python: str = sys.executable) -> None:
+        self.corpus = corpus
+        self.python = python
+        self.root = corpus.root
+        # The plugin must analyse exactly this directory, whatever lies above it.
+        self.env = {k: v for k, v in os.environ.items() if not k.startswith("ROSGRAPH_")}
+        self.env["ROSGRAPH_ROOT"] = str(self.root)
+        self.cache_dir = self.root / CACHE_DIR_NAME
+
+    def _flake8(self, with_plugin: bool) -> Sample:
+        hide = [] if with_plugin else ["--hide", PLUGIN_DIST]
+        return run_command([self.python, str(LAUNCHER), *hide, "--", "-j1", "."],
+                           self.root, self.env, CHECKER_OK)
+
+    def flake8_version(self, with_plugin: bool) -> str:
+        """``flake8 --version``: the loaded plugins, as the launcher sets them up."""
+        hide = [] if with_plugin else ["--hide", PLUGIN_DIST]
+        return run_command([self.python, str(LAUNCHER), *hide, "--", "--version"],
+                           self.root, self.env).stdout
+
+    # -- the steps --------------------------------------------------------------------------
+
+    def startup(self) -> Step:
+        return Step("startup", "python -c pass (start-up, reference)",
+                    lambda _: run_command([self.python, "-c", "pass"], self.root, self.env),
+                    lambda _: "")
+
+    def ast_parse(self) -> Step:
+        def measure(_: int) -> Sample:
+            wall, cpu = time.perf_counter(), time.process_time()
+            for path in self.corpus.files:
+                try:
+                    ast.parse(path.read_bytes(), filename=str(path))
+                except SyntaxError:  # flake8 reports E999 for these and goes on; so does the floor
+                    pass
+            return Sample(time.perf_counter() - wall, time.process_time() - cpu, None, "")
+
+        return Step("ast", "ast.parse, all files (in-process)", measure,
+                    lambda _: f"{len(self.corpus.files)} files")
+
+    def pyflakes(self) -> Step:
+        return Step("pyflakes", "pyflakes (subprocess)",
+                    lambda _: run_command([self.python, "-m", "pyflakes", "."], self.root, self.env,
+                                          CHECKER_OK),
+                    _count_reported)
+
+    def flake8_without(self) -> Step:
+        return Step("flake8", "flake8 -j1 without plugin", lambda _: self._flake8(False), _count_reported)
+
+    def flake8_cold(self) -> Step:
+        def measure(_: int) -> Sample:
+            shutil.rmtree(self.cache_dir, ignore_errors=True)
+            return self._flake8(True)
+
+        return Step("cold", "flake8 -j1 + plugin, cold (no cache)", measure, _count_reported)
+
+    def flake8_warm(self) -> Step:
+        """Must follow :meth:`flake8_cold` in the step list: it relies on the cache that run left."""
+        def measure(_: int) -> Sample:
+            if not self.cache_dir.is_dir():
+                raise CommandFailed(f"no {CACHE_DIR_NAME}/ after the cold run: the warm run would be cold")
+            return self._flake8(True)
+
+        return Step("warm", "flake8 -j1 + plugin, warm (cache, no change)", measure, _count_reported)
+
+    def flake8_one_changed(self) -> Step:
+        """Edit the largest file (a comment line, new each repetition), measure, restore it."""
+        edited = max(self.corpus.files, key=lambda p: (p.stat().st_size, str(p)))
+
+        def measure(repetition: int) -> Sample:
+            original = edited.read_bytes()
+            newline = b"" if original.endswith(b"\n") else b"\n"
+            edited.write_bytes(original + newline + f"# rosgraph-bench edit {repetition}\n".encode())
+            try:
+                return self._flake8(True)
+            finally:
+                edited.write_bytes(original)
+
+        rel = edited.relative_to(self.root).as_posix()
+        return Step("changed", "flake8 -j1 + plugin, one file changed", measure,
+                    lambda out: f"{_count_reported(out)}; edited {rel}")
+
+    def graph(self) -> Step:
+        return Step("graph", "graph command (--format json)",
+                    lambda _: run_command([self.python, "-m", "flake8_rosgraph", "graph", ".",
+                                           "--format", "json"], self.root, self.env),
+                    _describe_graph)
