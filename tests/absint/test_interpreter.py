@@ -193,3 +193,22 @@ def test_unknown_library_values_stay_unknown(analyse):
     """})
     assert a.value("m", "name") == TOP
     assert a.value("m", "value") == TOP
+
+
+def test_overridable_defaults_name_things_but_do_not_prune_branches(analyse):
+    a = analyse({"m.py": """
+        import argparse
+        parser = argparse.ArgumentParser()
+        parser.add_argument('--fast', action='store_true', default=False)
+        args = parser.parse_args()
+        suffix = '_fast' if args.fast else ''
+        if args.fast:
+            mode = 'fast'
+        else:
+            mode = 'slow'
+    """})
+    # the default configuration names the value …
+    assert a.strings("m", "suffix") == [""]
+    # … but code under the option is still reachable
+    assert a.strings("m", "mode") == ["fast", "slow"]
+    assert a.value("m", "mode").soft is False  # literals are not defaults

@@ -78,6 +78,7 @@ def fold(fn: Callable[..., Any], operands: list[Value], wrap=None) -> Value:
     """Apply ``fn`` to every combination of the operands' constants."""
     pools = []
     size = 1
+    soft = any(v.soft for v in operands)
     for value in operands:
         consts = value.consts()
         if consts is None:
@@ -107,7 +108,7 @@ def fold(fn: Callable[..., Any], operands: list[Value], wrap=None) -> Value:
             return TOP
         else:
             out.append(Const.of(result))
-    return atoms(out)
+    return atoms(out, soft)
 
 
 def call_str_method(name: str, receiver: Value, args: list[Value]) -> Value:

@@ -23,7 +23,7 @@ from .library import FunctionModel, Ref, ReturnSpec
 from .program import Class, Function, Module
 from .values import (BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
                      Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value,
-                     atoms, const, join_all)
+                     atoms, const, join_all, soften)
 
 BUILTIN_NAMES = frozenset(dir(builtins))
 Env = dict  # variable name -> Value
@@ -123,7 +123,7 @@ class Interpreter:
             targets: list[tuple[int, Env]] = []
             for edge in block.succs:
                 if edge.test is not None:
-                    decided = self.truth(self.eval(edge.test))
+                    decided = self.truth(self.eval(edge.test), by_default=False)
                     if decided is not None and decided != edge.polarity:
                         continue
                 targets.append((edge.target, out))
@@ -1029,6 +1029,8 @@ class Interpreter:
             return bound.get(ref.data, TOP)
         if ref.how == "const":
             return ref.data
+        if ref.how == "overridable":
+            return soften(bound.get(ref.data, TOP))
         if ref.how == "format":
             keys = self.format_keys(ref.data, bound)
             return atoms(Const.of(k) for k in keys) if keys else TOP
@@ -1181,9 +1183,14 @@ class Interpreter:
         return out
 
     @staticmethod
-    def truth(value: Value) -> bool | None:
-        """Python truthiness if the value decides it, else ``None``."""
-        if value.is_top or value.is_bottom:
+    def truth(value: Value, by_default: bool = True) -> bool | None:
+        """Python truthiness if the value decides it, else ``None``.
+
+        A *soft* value (an overridable default) decides value choices
+        (``a if opt else b`` names what runs by default) but not control flow: code
+        under ``if opt:`` exists in some configuration, so both branches are explored.
+        """
+        if value.is_top or value.is_bottom or (value.soft and not by_default):
             return None
         seen = set()
         for atom in value:

@@ -90,7 +90,8 @@ def from_data(data: Any) -> Value:
 class Ref:
     """Where an effect/return/store takes a value from.
 
-    ``how`` is "arg" (a parameter by name; "@return" is the call's result), "const"
+    ``how`` is "arg" (a parameter by name; "@return" is the call's result), "overridable"
+    (a parameter whose value is only a default the environment may replace), "const"
     (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
     stored earlier on the object in parameter ``on`` under ``key``) or "field" (a
     field of the receiver record).
@@ -108,6 +109,8 @@ def _ref(raw: Any, where: str) -> Ref:
         keys = set(raw)
         if keys == {"arg"} and isinstance(raw["arg"], str):
             return Ref("arg", raw["arg"])
+        if keys == {"overridable"} and isinstance(raw["overridable"], str):
+            return Ref("overridable", raw["overridable"])
         if keys == {"const"}:
             return Ref("const", from_data(raw["const"]))
         if keys == {"format"} and isinstance(raw["format"], str):
@@ -117,7 +120,7 @@ def _ref(raw: Any, where: str) -> Ref:
         if keys == {"field"} and isinstance(raw["field"], str):
             return Ref("field", raw["field"])
     raise StubError(f"{where}: expected a parameter name or one of "
-                    f"{{arg=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
+                    f"{{arg=…}}, {{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)

@@ -139,12 +139,15 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "_hash")
+    __slots__ = ("atoms", "soft", "_hash")
 
-    def __init__(self, items: frozenset | None) -> None:
-        # ``None`` means ⊤.
+    def __init__(self, items: frozenset | None, soft: bool = False) -> None:
+        # ``None`` means ⊤.  ``soft``: these are defaults the environment may override
+        # (a command-line option, a ROS parameter): good for naming what runs by
+        # default, never for deciding a branch.  ⊤ is never soft.
         self.atoms = items
-        self._hash = hash(items)
+        self.soft = soft and items is not None
+        self._hash = hash((items, self.soft))
 
     @property
     def is_top(self) -> bool:
@@ -158,7 +161,7 @@ class Value:
         return iter(()) if self.atoms is None else iter(self.atoms)
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Value) and self.atoms == other.atoms
+        return isinstance(other, Value) and self.atoms == other.atoms and self.soft == other.soft
 
     def __hash__(self) -> int:
         return self._hash
@@ -166,24 +169,26 @@ class Value:
     def __repr__(self) -> str:
         if self.atoms is None:
             return "⊤"
-        return "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
+        text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
+        return "~" + text if self.soft else text
 
     # -- lattice operations ------------------------------------------------
     def join(self, other: "Value") -> "Value":
         if self.atoms is None or other.atoms is None:
             return TOP
-        if other.atoms <= self.atoms:
+        soft = self.soft or other.soft
+        if other.atoms <= self.atoms and soft == self.soft:
             return self
-        if self.atoms <= other.atoms:
+        if self.atoms <= other.atoms and soft == other.soft:
             return other
-        return _bounded(self.atoms | other.atoms)
+        return _bounded(self.atoms | other.atoms, soft)
 
     def leq(self, other: "Value") -> bool:
         if other.atoms is None:
             return True
         if self.atoms is None:
             return False
-        return self.atoms <= other.atoms
+        return self.atoms <= other.atoms and (other.soft or not self.soft)
 
     def widen(self, other: "Value") -> "Value":
         """Widening: any growth at a loop head jumps straight to ⊤."""
@@ -227,18 +232,23 @@ def _value_depth(value: Value) -> int:
     return max((_depth(a) for a in value), default=0)
 
 
-def _bounded(items: frozenset) -> Value:
+def _bounded(items: frozenset, soft: bool = False) -> Value:
     if len(items) > MAX_ATOMS:
         return TOP
-    return Value(items)
+    return Value(items, soft)
 
 
-def atoms(items: Iterable[Atom]) -> Value:
+def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     """The value holding exactly ``items`` (⊤ past the bounds)."""
     items = frozenset(items)
     if any(_depth(a) > MAX_DEPTH for a in items):
         return TOP
-    return _bounded(items)
+    return _bounded(items, soft)
+
+
+def soften(value: Value) -> Value:
+    """The same possibilities, marked as overridable defaults."""
+    return value if value.is_top or value.soft else Value(value.atoms, True)
 
 
 def const(value: ConstType) -> Value:

@@ -1,0 +1,36 @@
+"""The value lattice on concrete cases (the laws are property-tested elsewhere)."""
+from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, TOP, Const, Seq, atoms, const,
+                                           soften)
+
+
+def test_join_is_set_union_until_the_bound():
+    a, b = const("a"), const("b")
+    assert a.join(b).strings() == ["a", "b"]
+    many = BOTTOM
+    for i in range(MAX_ATOMS + 1):
+        many = many.join(const(i))
+    assert many.is_top
+
+
+def test_constants_of_different_types_stay_apart():
+    assert len(list(atoms([Const.of(1), Const.of(True), Const.of(1.0)]))) == 3
+
+
+def test_widening_jumps_to_top_on_growth_only():
+    a = const("a")
+    assert a.widen(a) == a
+    assert a.widen(const("b")).is_top
+
+
+def test_nesting_beyond_the_depth_bound_is_top():
+    value = const(0)
+    for _ in range(10):
+        value = atoms([Seq("tuple", (value,))])
+    assert value.is_top
+
+
+def test_softness_survives_join_and_orders_values():
+    hard, soft = const("x"), soften(const("x"))
+    assert hard.join(soft).soft
+    assert hard.leq(soft) and not soft.leq(hard)
+    assert not soften(TOP).soft
