@@ -212,3 +212,16 @@ def test_overridable_defaults_name_things_but_do_not_prune_branches(analyse):
     # … but code under the option is still reachable
     assert a.strings("m", "mode") == ["fast", "slow"]
     assert a.value("m", "mode").soft is False  # literals are not defaults
+
+
+def test_records_are_updated_through_their_variable(analyse):
+    a = analyse({"m.py": """
+        from rclpy.qos import QoSProfile, ReliabilityPolicy
+        profile = QoSProfile(depth=5)
+        profile.reliability = ReliabilityPolicy.BEST_EFFORT
+        reliability = profile.reliability
+        depth = profile.depth
+    """})
+    [atom] = list(a.value("m", "reliability"))
+    assert atom.qualname == "rclpy.qos.ReliabilityPolicy.BEST_EFFORT"
+    assert a.value("m", "depth").consts() == [5]

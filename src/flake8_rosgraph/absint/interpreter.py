@@ -259,7 +259,12 @@ class Interpreter:
         if isinstance(target, ast.Name):
             self.store_name(target.id, value)
         elif isinstance(target, ast.Attribute):
-            self.store_attr(self.eval(target.value), target.attr, value)
+            holder = self.eval(target.value)
+            self.store_attr(holder, target.attr, value)
+            if isinstance(target.value, ast.Name) and any(isinstance(a, Record) for a in holder):
+                # Records (library value objects such as a QoS profile) are updated in place
+                # through the variable that holds them.
+                self.store_name(target.value.id, _with_field(holder, target.attr, value))
         elif isinstance(target, ast.Subscript):
             self.eval(target.value)
             self.eval(target.slice)
@@ -1233,6 +1238,17 @@ class Args:
     pos: list
     kw: dict
     star: bool
+
+
+def _with_field(holder: Value, name: str, value: Value) -> Value:
+    out = []
+    for atom in holder:
+        if isinstance(atom, Record):
+            fields = dict(atom.fields)
+            fields[name] = value
+            atom = Record(atom.qualname, tuple(sorted(fields.items())))
+        out.append(atom)
+    return atoms(out, holder.soft)
 
 
 def _raise():
