@@ -1,6 +1,7 @@
 """Command line: ``flake8-rosgraph graph|check PATH`` (and ``python -m flake8_rosgraph``).
 
-``graph`` exit status: 0 success, 2 usage or internal error; ``check``: 0 clean, 1 findings, 2 error.  Diagnostics go to stderr, one per
+Exit status of ``graph``: 0 success, 2 usage or internal error;
+of ``check``: 0 clean, 1 findings, 2 usage or internal error.  Diagnostics go to stderr, one per
 line, and into the JSON output's ``diagnostics`` list.
 """
 from __future__ import annotations

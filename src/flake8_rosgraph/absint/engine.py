@@ -212,4 +212,3 @@ class Analysis:
             for eff in effects.values():
                 seen[eff] = None
         return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
-

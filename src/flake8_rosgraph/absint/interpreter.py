@@ -17,7 +17,7 @@ import string
 from dataclasses import dataclass, field
 
 from .cfg import CFG, Bind, Eval, Return
-from .engine import MAX_BLOCK_VISITS, Analysis, Effect, Task
+from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Effect, Task
 from .folding import BINOPS, CMPOPS, PURE_BUILTINS, UNARYOPS, call_str_method, fold
 from .library import FunctionModel, Ref, ReturnSpec
 from .program import Class, Function, Module
@@ -135,7 +135,7 @@ class Interpreter:
                 if old is None:
                     new = dict(state)
                 else:
-                    widen = target in cfg.loop_heads and visits.get(target, 0) >= 3
+                    widen = target in cfg.loop_heads and visits.get(target, 0) >= WIDEN_AFTER
                     new = _join_env(old, state, widen)
                     if new == old:
                         continue

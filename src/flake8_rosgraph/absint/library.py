@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any, Iterable
 
 try:
@@ -22,7 +21,7 @@ try:
 except ImportError:  # Python 3.10
     import tomli as tomllib  # type: ignore[no-redef]
 
-from .values import Const, ConstType, Record, Value, atoms, const
+from .values import Record, Value, atoms, const
 
 
 class StubError(Exception):
@@ -119,8 +118,9 @@ def _ref(raw: Any, where: str) -> Ref:
             return Ref("load", raw["load"], str(raw["on"]))
         if keys == {"field"} and isinstance(raw["field"], str):
             return Ref("field", raw["field"])
-    raise StubError(f"{where}: expected a parameter name or one of "
-                    f"{{arg=…}}, {{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, {{field=…}}; got {raw!r}")
+    raise StubError(f"{where}: expected a parameter name or one of {{arg=…}}, "
+                    f"{{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, "
+                    f"{{field=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)
@@ -385,12 +385,3 @@ def load_library(files: Iterable[tuple[str, str]]) -> LibraryModel:
     for source, text in files:
         load_stub_text(text, source, model)
     return model
-
-
-def read_stub_file(path: Path) -> tuple[str, str]:
-    return path.name, path.read_text(encoding="utf-8")
-
-
-__all__ = ["LibraryModel", "FunctionModel", "ClassModel", "Signature", "Param", "Ref",
-           "ReturnSpec", "EffectSpec", "StoreSpec", "load_library", "from_data",
-           "Const", "ConstType"]
