@@ -225,3 +225,23 @@ def test_records_are_updated_through_their_variable(analyse):
     [atom] = list(a.value("m", "reliability"))
     assert atom.qualname == "rclpy.qos.ReliabilityPolicy.BEST_EFFORT"
     assert a.value("m", "depth").consts() == [5]
+
+
+def test_library_state_stored_on_an_object_is_loaded_back(analyse):
+    a = analyse({"m.py": """
+        import rclpy
+        from rclpy.node import Node
+        class Talker(Node):
+            def __init__(self):
+                super().__init__('talker')
+                self.status_topic = self.get_name() + '/status'
+                self.declare_parameter('rate', 2.0)
+                self.period = 1.0 / self.get_parameter('rate').value
+        node = Talker()
+        topic = node.status_topic
+        period = node.period
+        plain = rclpy.create_node('plain').get_name()
+    """})
+    assert a.strings("m", "topic") == ["talker/status"]
+    assert a.value("m", "period").consts() == [0.5]
+    assert a.strings("m", "plain") == ["plain"]

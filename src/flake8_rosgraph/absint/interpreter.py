@@ -645,8 +645,9 @@ class Interpreter:
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
-                if field_value.is_bottom and not self._all_user(atom.cls):
-                    return TOP
+                if field_value.is_bottom and attr not in self.program.stored_attrs \
+                        and not self._all_user(atom.cls):
+                    return TOP  # nothing here assigns it: the library's attribute
                 return field_value
             return field_value.join(found)
         if isinstance(atom, ClassAtom):

@@ -112,6 +112,9 @@ class Program:
         self.fid_of: dict[int, int] = {}     # id(ast node) -> fid
         self.cid_of: dict[int, int] = {}     # id(ast node) -> cid
         self.imports: dict[str, frozenset[str]] = {}  # module -> absolute names it imports
+        #: Attribute names some workspace code assigns (``x.name = …``): any other attribute
+        #: of an object with library bases can only come from the library.
+        self.stored_attrs: set[str] = set()
         self.rejected: list[tuple[Module, str]] = []
         for mod in list(self.modules.values()):
             self._collect(mod)
@@ -177,6 +180,8 @@ class Program:
             else:
                 if isinstance(node, ast.Name):
                     (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
+                elif isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
+                    self.stored_attrs.add(node.attr)
                 elif isinstance(node, ast.alias):
                     scope.bound.add((node.asname or node.name).split(".")[0])
                 elif isinstance(node, ast.Import):
