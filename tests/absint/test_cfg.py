@@ -123,3 +123,10 @@ def test_with_binds_context_value():
     cfg = cfg_of("with open(p) as f:\n    use(f)\n")
     binds = [op for b in cfg.blocks.values() for op in b.ops if isinstance(op, Bind)]
     assert binds[0].how == "enter"
+
+
+def test_statements_in_a_try_body_still_dominate_the_exit():
+    cfg = cfg_of("try:\n    a()\n    b()\nexcept KeyboardInterrupt:\n    pass\nc()\n")
+    dom = cfg.exit_dominators()
+    assert block_with(cfg, calls_to("a"))[0] in dom
+    assert block_with(cfg, calls_to("b"))[0] in dom

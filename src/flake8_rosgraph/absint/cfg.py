@@ -67,19 +67,22 @@ class CFG:
     blocks: dict[int, Block]
     loop_heads: frozenset[int]
 
-    def preds(self) -> dict[int, list[int]]:
+    def preds(self, exceptional: bool = True) -> dict[int, list[int]]:
         out: dict[int, list[int]] = {b: [] for b in self.blocks}
         for block in self.blocks.values():
             for edge in block.succs:
                 out[edge.target].append(block.id)
-            for target in block.exc_succs:
-                out[target].append(block.id)
+            if exceptional:
+                for target in block.exc_succs:
+                    out[target].append(block.id)
         return out
 
     def exit_dominators(self) -> frozenset[int]:
-        """Blocks on every path from entry to the normal exit (their operations always run
-        when the function returns normally); computed with the classic iterative algorithm."""
-        preds = self.preds()
+        """Blocks on every exception-free path from entry to the normal exit: their
+        operations always run unless something raises (an entity created inside
+        ``try: … except KeyboardInterrupt:`` is not "conditional"). Classic iterative
+        algorithm over the normal edges."""
+        preds = self.preds(exceptional=False)
         order = sorted(self.blocks)
         every = frozenset(order)
         dom = {b: every for b in order}
