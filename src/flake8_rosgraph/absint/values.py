@@ -216,6 +216,8 @@ class Value:
 
 TOP = Value(None)
 BOTTOM = Value(frozenset())
+#: Either boolean: the value of a test the analysis cannot decide.
+BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 
 
 def _depth(atom: Atom) -> int:

@@ -1,0 +1,468 @@
+"""Calls: user functions through the engine's tasks, library models, and pure builtins.
+
+A user call binds arguments to a context tuple and reads the callee task's return
+summary (the engine re-runs the caller when it grows).  A library call binds to the
+stub's real parameter list, records the declared effects, performs stores, schedules
+callbacks and builds the modelled return value.
+"""
+from __future__ import annotations
+
+import ast
+import itertools
+import string
+from dataclasses import dataclass
+
+from .engine import Effect
+from .folding import PURE_BUILTINS, call_str_method, fold
+from .frame import Frame
+from .library import FunctionModel, Ref, ReturnSpec
+from .program import Function
+from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
+                     Extern, ExternBound, FuncAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
+                     const, join_all, soften)
+
+
+class CallSemantics:
+    """Call semantics, mixed into :class:`~.interpreter.Interpreter`."""
+
+    def super_value(self, node: ast.Call) -> Value:
+        frame = self.frame
+        if node.args:
+            classes = self.eval(node.args[0])
+            receivers = self.eval(node.args[1]) if len(node.args) > 1 else TOP
+            cids = [a.cid for a in classes if isinstance(a, ClassAtom)]
+        else:
+            func = frame.func
+            cids = [func.cls] if func is not None and func.cls is not None else []
+            params = self.param_names(func) if func is not None else []
+            receivers = frame.env.get(params[0], TOP) if params else TOP
+        if receivers.is_top or not cids:
+            return TOP
+        return atoms(SuperAtom(cid, recv) for cid in cids for recv in receivers)
+
+    def call_method(self, target: Value, name: str, args: list[Value], node) -> Value:
+        return self.call(self.load_attr(target, name), Args(args, {}, False), node)
+
+    def call(self, func: Value, args: "Args", node: ast.AST | None) -> Value:
+        if func.is_top:
+            self._escape(args)
+            return TOP
+        out = BOTTOM
+        for atom in sorted(func, key=repr):
+            out = out.join(self._call_atom(atom, args, node))
+        return out
+
+    def _escape(self, args: "Args") -> None:
+        """Callables passed to unknown code may be called by it: analyse them as entries."""
+        for value in list(args.pos) + list(args.kw.values()):
+            for atom in value:
+                if isinstance(atom, (FuncAtom, BoundMethod)):
+                    self.schedule_callback(atom)
+
+    def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
+        if isinstance(atom, FuncAtom):
+            return self.call_user(atom.fid, None, args)
+        if isinstance(atom, BoundMethod):
+            return self.call_user(atom.fid, atom.receiver, args)
+        if isinstance(atom, ClassAtom):
+            return self.instantiate(atom, args, node)
+        if isinstance(atom, Extern):
+            return self.call_extern(atom.qualname, args, node)
+        if isinstance(atom, ExternBound):
+            return self.call_bound_extern(atom, args, node)
+        return TOP
+
+    # -- user code ----------------------------------------------------------------------------
+    def param_names(self, func: Function) -> list[str]:
+        a = func.node.args
+        names = [p.arg for p in a.posonlyargs + a.args]
+        if a.vararg:
+            names.append(a.vararg.arg)
+        names.extend(p.arg for p in a.kwonlyargs)
+        if a.kwarg:
+            names.append(a.kwarg.arg)
+        return names
+
+    def bind_user(self, func: Function, receiver: Atom | None, args: "Args") -> tuple | None:
+        """The context tuple for calling ``func``; ``None`` if an argument is still ⊥."""
+        a = func.node.args
+        positional = a.posonlyargs + a.args
+        pos = ([atoms([receiver])] if receiver is not None else []) + list(args.pos)
+        defaults = [None] * (len(positional) - len(a.defaults)) + list(a.defaults)
+        ctx: list[Value] = []
+        for i, (param, default) in enumerate(zip(positional, defaults)):
+            if i < len(pos):
+                ctx.append(pos[i])
+            elif param.arg in args.kw:
+                ctx.append(args.kw[param.arg])
+            elif args.star:
+                ctx.append(TOP)
+            elif default is not None:
+                ctx.append(self.eval_default(func, default))
+            else:
+                ctx.append(TOP)
+        if a.vararg:
+            extra = pos[len(positional):]
+            ctx.append(atoms([Coll("tuple", TOP)]) if args.star else
+                       atoms([Seq("tuple", tuple(extra))]))
+        for param, default in zip(a.kwonlyargs, a.kw_defaults):
+            if param.arg in args.kw:
+                ctx.append(args.kw[param.arg])
+            elif default is not None and not args.star:
+                ctx.append(self.eval_default(func, default))
+            else:
+                ctx.append(TOP)
+        if a.kwarg:
+            known = {p.arg for p in positional + a.kwonlyargs}
+            rest = tuple((const(k), v) for k, v in sorted(args.kw.items()) if k not in known)
+            ctx.append(atoms([Coll("dict", TOP)]) if args.star else atoms([DictAtom(rest)]))
+        if any(v.is_bottom for v in ctx):
+            return None
+        return tuple(ctx)
+
+    def eval_default(self, func: Function, expr: ast.expr) -> Value:
+        outer = self.frame
+        task = outer.task if outer is not None else ("mod", func.module.name, ())
+        self.frame = Frame(task, func.module)
+        try:
+            return self.eval(expr)
+        finally:
+            self.frame = outer
+
+    def default_context(self, fid: int, receiver: Atom | None) -> tuple:
+        func = self.program.functions[fid]
+        ctx = self.bind_user(func, receiver, Args([], {}, False))
+        if ctx is None:
+            ctx = tuple(TOP if v.is_bottom else v for v in
+                        self._bind_loose(func, receiver))
+        return ctx
+
+    def _bind_loose(self, func: Function, receiver: Atom | None) -> list[Value]:
+        names = self.param_names(func)
+        first = [atoms([receiver])] if receiver is not None else []
+        return first + [TOP] * (len(names) - len(first))
+
+    def call_user(self, fid: int, receiver: Atom | None, args: "Args") -> Value:
+        func = self.program.functions[fid]
+        ctx = self.bind_user(func, receiver, args)
+        if ctx is None:
+            return BOTTOM
+        return self.an.call_summary(fid, ctx, self.frame.task)
+
+    def schedule_callback(self, atom: Atom) -> None:
+        if isinstance(atom, FuncAtom):
+            self.an.schedule(self.an.function_task(atom.fid, self.default_context(atom.fid, None)))
+        elif isinstance(atom, BoundMethod):
+            self.an.schedule(self.an.function_task(
+                atom.fid, self.default_context(atom.fid, atom.receiver)))
+
+    def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
+        obj = Obj(self._site(node), cls)
+        self.an.allocated.add(cls.cid)
+        self.construct(obj, args, node)
+        return atoms([obj])
+
+    def construct(self, obj: Obj, args: "Args", node) -> None:
+        init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+        if init is not None:
+            self.call(init, args, node)
+        for lib_cls in [c.qualname for c in self.mro(obj.cls) if isinstance(c, Extern)]:
+            for name in self.lib.called_methods(lib_cls):
+                method = self.class_attr(self.mro(obj.cls), name, obj)
+                for atom in method or ():
+                    if isinstance(atom, BoundMethod):
+                        self.schedule_callback(atom)
+
+    def instantiate_entry(self, cid: int) -> None:
+        """Analyse a class nothing instantiates, as if a library created it with unknown arguments."""
+        klass = self.program.classes[cid]
+        obj = Obj(f"entry:{klass.module.path}:{klass.qualname}", ClassAtom(cid))
+        self.an.allocated.add(cid)
+        # Lookups need a frame; the class's module top level is the task that re-runs
+        # (harmlessly) if what they read grows.
+        outer, self.frame = self.frame, Frame(("mod", klass.module.name, ()), klass.module)
+        try:
+            self._schedule_entry(obj, cid)
+        finally:
+            self.frame = outer
+
+    def _schedule_entry(self, obj: Obj, cid: int) -> None:
+        init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+        for atom in init or ():
+            if isinstance(atom, BoundMethod):
+                self.schedule_callback(atom)
+        for lib_cls in self.library_bases(cid):
+            for name in self.lib.called_methods(lib_cls):
+                for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
+                    if isinstance(atom, BoundMethod):
+                        self.schedule_callback(atom)
+
+    def _site(self, node) -> str:
+        line = getattr(node, "lineno", 0)
+        col = getattr(node, "col_offset", 0)
+        return f"{self.frame.module.path}:{line}:{col}"
+
+    # -- library code ---------------------------------------------------------------------------
+    def call_extern(self, qualname: str, args: "Args", node) -> Value:
+        if qualname.startswith("builtins."):
+            return self.call_builtin(qualname[len("builtins."):], args, node)
+        owner, _, method = qualname.rpartition(".")
+        fn = self.lib.functions.get(qualname) or (
+            self.lib.method(owner, method) if owner in self.lib.classes else None)
+        if fn is not None:  # a function, or a method called on the class (self passed explicitly)
+            return self.apply_model(fn, None, args, node)
+        if qualname in self.lib.classes:
+            if self.lib.class_flag(qualname, "record"):
+                init = self.lib.method(qualname, "__init__")
+                bound = self.bind_model(init, None, args) if init else {}
+                return atoms([Record(qualname, tuple(sorted(bound.items())))])
+            obj = Obj(self._site(node), Extern(qualname))
+            init = self.lib.method(qualname, "__init__")
+            if init is not None:
+                self.apply_model(init, obj, args, node)
+            return atoms([obj])
+        self._escape(args)
+        last = qualname.rsplit(".", 1)[-1]
+        if last[:1].isupper():
+            return atoms([Obj(self._site(node), Extern(qualname))])
+        return TOP
+
+    def call_bound_extern(self, atom: ExternBound, args: "Args", node) -> Value:
+        owner, _, name = atom.qualname.rpartition(".")
+        if owner == "builtins.str":
+            return self.call_str(atom.receiver, name, args)
+        if owner == "builtins.container":
+            return self.call_container(atom.receiver, name, args)
+        model = self.lib.method(owner, name)
+        if model is None:
+            self._escape(args)
+            return TOP
+        return self.apply_model(model, atom.receiver, args, node)
+
+    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args") -> dict:
+        """Arguments of a library call by parameter name (⊥ arguments count as unknown)."""
+        params = model.signature.params
+        pos = ([atoms([receiver])] if receiver is not None else []) + list(args.pos)
+        bound: dict[str, Value] = {}
+        positional = [p for p in params if p.kind == "pos"]
+        for param, value in zip(positional, pos):
+            bound[param.name] = value
+        extra = pos[len(positional):]
+        for param in params:
+            if param.kind == "varargs":
+                bound[param.name] = atoms([Seq("tuple", tuple(extra))])
+            elif param.kind == "varkw":
+                bound[param.name] = atoms([DictAtom(tuple(
+                    (const(k), v) for k, v in sorted(args.kw.items())))])
+            elif param.name in args.kw:
+                bound[param.name] = args.kw[param.name]
+            elif param.name not in bound:
+                bound[param.name] = TOP if args.star or param.default is None else param.default
+        return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
+
+    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node) -> Value:
+        bound = self.bind_model(model, receiver, args)
+        result = self.model_return(model.returns, bound, receiver, node)
+        bound["@return"] = result
+        frame = self.frame
+        for index, spec in enumerate(model.effects):
+            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
+            key = (id(node), model.qualname, index)
+            frame.effects[key] = Effect(
+                spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
+                frame.module.column(node) if node is not None else 0,
+                frame.cls is None and frame.block not in frame.dominators,
+                frame.func.qualname if frame.func else "<module>")
+        for store in model.stores:
+            value = self.ref(store.value, bound, receiver)
+            for key in self.format_keys(store.key, bound):
+                for atom in bound.get(store.on, TOP):
+                    if isinstance(atom, Obj):
+                        self.an.write(("a", atom.site, key), value)
+        for name in model.callbacks:
+            for atom in bound.get(name, BOTTOM):
+                self.schedule_callback(atom)
+        return result
+
+    def model_return(self, spec: ReturnSpec, bound: dict, receiver: Atom | None, node) -> Value:
+        if spec.how == "instance":
+            qualname = self.lib.canonical(spec.data)
+            return atoms([Obj(self._site(node), Extern(qualname))])
+        if spec.how == "record":
+            fields = tuple((k, self.ref(r, bound, receiver)) for k, r in spec.fields)
+            return atoms([Record(spec.data, fields)])
+        if spec.how == "ref":
+            return self.ref(spec.data, bound, receiver)
+        return TOP
+
+    def ref(self, ref: Ref, bound: dict, receiver: Atom | None) -> Value:
+        if ref.how == "arg":
+            return bound.get(ref.data, TOP)
+        if ref.how == "const":
+            return ref.data
+        if ref.how == "overridable":
+            return soften(bound.get(ref.data, TOP))
+        if ref.how == "format":
+            keys = self.format_keys(ref.data, bound)
+            return atoms(Const.of(k) for k in keys) if keys else TOP
+        if ref.how == "field":
+            if isinstance(receiver, Record):
+                return receiver.field(ref.data) or TOP
+            return TOP
+        if ref.how == "load":
+            out = BOTTOM
+            keys = self.format_keys(ref.data, bound)
+            holders = bound.get(ref.on, TOP)
+            if not keys or holders.is_top:
+                return TOP
+            for atom in holders:
+                if not isinstance(atom, Obj):
+                    return TOP
+                for key in keys:
+                    value = self.an.read(("a", atom.site, key), self.frame.task)
+                    out = out.join(TOP if value.is_bottom else value)
+            return out if not out.is_bottom else TOP
+        return TOP
+
+    def format_keys(self, template: str, bound: dict) -> list[str]:
+        """All expansions of a key template over constant arguments.
+
+        Fields are ``{param}`` or ``{param|filter}``, the filter one of :data:`KEY_FILTERS`.
+        An empty list means the key is not statically known.
+        """
+        fields = sorted({f[1] for f in string.Formatter().parse(template) if f[1]})
+        pools = []
+        for name in fields:
+            param, _, filt = name.partition("|")
+            value = bound.get(param, TOP)
+            values = KEY_FILTERS[filt](value) if filt in KEY_FILTERS else \
+                (None if filt else value.consts())
+            if not values:
+                return []
+            pools.append([str(v) for v in values])
+        out = set()
+        for combo in itertools.product(*pools):
+            text = template
+            for name, part in zip(fields, combo):
+                text = text.replace("{" + name + "}", part)
+            out.add(text)
+            if len(out) > MAX_ATOMS:
+                return []
+        return sorted(out)
+
+    # -- builtins ---------------------------------------------------------------------------
+    def call_builtin(self, name: str, args: "Args", node) -> Value:
+        pos = args.pos
+        if name in PURE_BUILTINS and not args.kw and not args.star:
+            if name == "str" and not pos:
+                return const("")
+            if pos and all(v.consts() is not None for v in pos):
+                return fold(PURE_BUILTINS[name], list(pos))
+            if name == "len":
+                return TOP
+            return TOP
+        if name == "range" and pos and all(v.consts() is not None for v in pos):
+            out = fold(lambda *a: tuple(range(*a)) if len(range(*a)) <= MAX_ATOMS else _raise(),
+                       list(pos), wrap=lambda r: Seq("list", tuple(const(x) for x in r)))
+            return out if not out.is_top else atoms([Coll("list", TOP)])
+        if name in ("list", "tuple", "sorted", "reversed", "set", "frozenset", "iter"):
+            if not pos:
+                return atoms([Seq("list", ())])
+            if name in ("list", "tuple"):
+                seqs = [a for a in pos[0]]
+                if seqs and all(isinstance(a, Seq) for a in seqs):
+                    return atoms(Seq(name, a.items) for a in seqs)
+            return atoms([Coll(name, self.iter_elem(pos[0]))])
+        if name == "enumerate" and pos:
+            return atoms([Coll("list", atoms([Seq("tuple", (TOP, self.iter_elem(pos[0])))]))])
+        if name == "zip" and pos:
+            return atoms([Coll("list", atoms([Seq("tuple", tuple(self.iter_elem(p) for p in pos))]))])
+        if name == "dict":
+            if args.kw and not pos:
+                return atoms([DictAtom(tuple((const(k), v) for k, v in args.kw.items()))])
+            return atoms([Coll("dict", TOP)])
+        if name in ("isinstance", "issubclass", "hasattr", "callable"):
+            return BOOLS
+        if name == "getattr" and len(pos) >= 2:
+            names = pos[1].strings()
+            if names:
+                out = join_all(self.load_attr(pos[0], n) for n in names)
+                return out.join(pos[2]) if len(pos) > 2 else out
+            return TOP
+        if name == "setattr" and len(pos) == 3:
+            for attr in pos[1].strings() or ():
+                self.store_attr(pos[0], attr, pos[2])
+            return const(None)
+        if name == "print":
+            return const(None)
+        self._escape(args)
+        return TOP
+
+    def call_str(self, receiver: Const, name: str, args: "Args") -> Value:
+        recv = atoms([receiver])
+        if name == "format":
+            names = sorted(args.kw)
+            pools = [recv] + list(args.pos) + [args.kw[k] for k in names]
+            n = len(args.pos)
+            return fold(lambda s, *v: s.format(*v[:n], **dict(zip(names, v[n:]))), pools)
+        if name == "join" and args.pos:
+            out = BOTTOM
+            for atom in args.pos[0]:
+                if not isinstance(atom, Seq):
+                    return TOP
+                out = out.join(fold(lambda s, *parts: s.join(parts), [recv, *atom.items]))
+            return out if not args.pos[0].is_top else TOP
+        if args.kw or args.star:
+            return TOP
+        return call_str_method(name, recv, list(args.pos))
+
+    def call_container(self, receiver: Atom, name: str, args: "Args") -> Value:
+        if isinstance(receiver, DictAtom):
+            keys = join_all(k for k, _ in receiver.items)
+            values = join_all(v for _, v in receiver.items)
+            if name == "get":
+                default = args.pos[1] if len(args.pos) > 1 else const(None)
+                return self._subscript(receiver, args.pos[0] if args.pos else TOP).join(default)
+            if name == "items":
+                return atoms([Coll("list", atoms([Seq("tuple", (keys, values))]))])
+            if name == "keys":
+                return atoms([Coll("list", keys)])
+            if name == "values":
+                return atoms([Coll("list", values)])
+        if name in ("copy",):
+            return atoms([receiver])
+        if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
+            return const(None)
+        return TOP
+
+
+def _argparse_dest(value: Value) -> list[str] | None:
+    """argparse's ``dest`` for ``add_argument(*name_or_flags)``: first long option, else first name."""
+    out = []
+    for atom in value:
+        if not isinstance(atom, Seq) or not atom.items:
+            return None
+        flags = [v.strings() for v in atom.items]
+        if any(f is None or len(f) != 1 for f in flags):
+            return None
+        names = [f[0] for f in flags]
+        chosen = next((n for n in names if n.startswith("--")), names[0])
+        out.append(chosen.lstrip("-").replace("-", "_"))
+    return out or None
+
+
+#: Filters usable in library-model key templates (``{param|filter}``).
+KEY_FILTERS = {"argparse_dest": _argparse_dest}
+
+
+@dataclass(frozen=True)
+class Args:
+    """Evaluated call arguments; ``star`` means some positions/keywords are unknown."""
+
+    pos: list
+    kw: dict
+    star: bool
+
+
+def _raise():
+    raise ValueError

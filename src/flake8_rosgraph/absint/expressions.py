@@ -1,0 +1,336 @@
+"""Transfer functions of expressions: what each Python expression evaluates to over the value lattice.
+
+Constants fold with Python's own operators (:mod:`.folding`); containers keep their
+shape; comprehensions are evaluated inline; calls are delegated to :mod:`.calls`.
+"""
+from __future__ import annotations
+
+import ast
+import itertools
+
+from .folding import BINOPS, CMPOPS, UNARYOPS, fold
+from .calls import Args
+from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
+                     DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
+                     join_all)
+
+
+class ExpressionSemantics:
+    """Expression evaluation, mixed into :class:`~.interpreter.Interpreter`."""
+
+    def eval(self, node: ast.expr) -> Value:
+        method = getattr(self, "e_" + type(node).__name__, None)
+        if method is None:
+            return TOP
+        return method(node)
+
+    def e_Constant(self, node: ast.Constant) -> Value:
+        return const(node.value)
+
+    def e_Name(self, node: ast.Name) -> Value:
+        return self.load_name(node.id)
+
+    def e_Attribute(self, node: ast.Attribute) -> Value:
+        return self.load_attr(self.eval(node.value), node.attr)
+
+    def e_NamedExpr(self, node: ast.NamedExpr) -> Value:
+        value = self.eval(node.value)
+        self.assign(node.target, value)
+        return value
+
+    def e_JoinedStr(self, node: ast.JoinedStr) -> Value:
+        parts = []
+        for part in node.values:
+            if isinstance(part, ast.Constant):
+                parts.append(const(str(part.value)))
+            elif isinstance(part, ast.FormattedValue):
+                value = self.eval(part.value)
+                if part.conversion in (ord("r"), ord("a")):
+                    value = fold(repr, [value])
+                spec = self.eval(part.format_spec) if part.format_spec else const("")
+                parts.append(fold(format, [value, spec]))
+            else:
+                parts.append(TOP)
+        return fold(lambda *p: "".join(p), parts)
+
+    def e_BinOp(self, node: ast.BinOp) -> Value:
+        return self.binop(node.op, self.eval(node.left), self.eval(node.right))
+
+    def binop(self, op: ast.operator, left: Value, right: Value) -> Value:
+        if left.is_bottom or right.is_bottom:
+            return BOTTOM
+        fn = BINOPS.get(type(op))
+        if fn is None:
+            return TOP
+        if isinstance(op, ast.Mod) and right.consts() is None:
+            tuples = _const_tuples(right)
+            if tuples is None:
+                return TOP
+            return fold(fn, [left, atoms(Const("tuple", t) for t in tuples)])
+        if isinstance(op, ast.Add) and left.consts() is None:
+            items = [a for a in left] + [a for a in right]
+            if items and all(isinstance(a, Seq) for a in items) and len(items) == 2:
+                a, b = items
+                return atoms([Seq(a.kind, a.items + b.items)])
+        return fold(fn, [left, right])
+
+    def e_UnaryOp(self, node: ast.UnaryOp) -> Value:
+        value = self.eval(node.operand)
+        if isinstance(node.op, ast.Not):
+            decided = self.truth(value)
+            return BOOLS if decided is None else const(not decided)
+        return fold(UNARYOPS[type(node.op)], [value])
+
+    def e_BoolOp(self, node: ast.BoolOp) -> Value:
+        out = BOTTOM
+        for value_node in node.values:
+            value = self.eval(value_node)
+            decided = self.truth(value)
+            stop = decided is (isinstance(node.op, ast.Or))
+            if decided is None or stop or value_node is node.values[-1]:
+                out = out.join(value)
+            if stop:
+                break
+        return out
+
+    def e_Compare(self, node: ast.Compare) -> Value:
+        left = self.eval(node.left)
+        result: Value | None = None
+        for op, comp in zip(node.ops, node.comparators):
+            right = self.eval(comp)
+            step = self.compare(op, left, right)
+            result = step if result is None else fold(lambda a, b: a and b, [result, step])
+            left = right
+        return result if result is not None else BOOLS
+
+    def compare(self, op: ast.cmpop, left: Value, right: Value) -> Value:
+        fn = CMPOPS[type(op)]
+        if left.consts() is not None and right.consts() is not None:
+            return fold(fn, [left, right])
+        if isinstance(op, (ast.Is, ast.IsNot, ast.Eq, ast.NotEq)) and not left.is_top \
+                and not right.is_top:
+            negate = isinstance(op, (ast.IsNot, ast.NotEq))
+            out = set()
+            for a in left:
+                for b in right:
+                    if isinstance(a, Const) and isinstance(b, Const):
+                        out.add(fn(a.value, b.value))
+                    elif isinstance(a, Const) != isinstance(b, Const) and \
+                            None in (getattr(a, "value", 0), getattr(b, "value", 0)):
+                        out.add(negate)  # an object is never None
+                    else:
+                        out.update((True, False))
+            return atoms(Const.of(x) for x in out)
+        return BOOLS
+
+    def e_IfExp(self, node: ast.IfExp) -> Value:
+        decided = self.truth(self.eval(node.test))
+        if decided is True:
+            return self.eval(node.body)
+        if decided is False:
+            return self.eval(node.orelse)
+        return self.eval(node.body).join(self.eval(node.orelse))
+
+    def e_Tuple(self, node: ast.Tuple | ast.List) -> Value:
+        kind = "tuple" if isinstance(node, ast.Tuple) else "list"
+        items = []
+        for elt in node.elts:
+            if isinstance(elt, ast.Starred):
+                inner = self.eval(elt.value)
+                seqs = [a for a in inner if isinstance(a, Seq)]
+                if len(seqs) == 1 and len(list(inner)) == 1:
+                    items.extend(seqs[0].items)
+                    continue
+                return atoms([Coll(kind, TOP)])
+            items.append(self.eval(elt))
+        return atoms([Seq(kind, tuple(items))])
+
+    e_List = e_Tuple
+
+    def e_Set(self, node: ast.Set) -> Value:
+        return atoms([Coll("set", join_all(self.eval(e) for e in node.elts))])
+
+    def e_Dict(self, node: ast.Dict) -> Value:
+        items = []
+        for key, value in zip(node.keys, node.values):
+            if key is None:
+                self.eval(value)
+                return atoms([Coll("dict", TOP)])
+            items.append((self.eval(key), self.eval(value)))
+        return atoms([DictAtom(tuple(items))])
+
+    def e_Subscript(self, node: ast.Subscript) -> Value:
+        container = self.eval(node.value)
+        index = self.eval(node.slice)
+        if container.is_top:
+            return TOP
+        out = BOTTOM
+        for atom in container:
+            out = out.join(self._subscript(atom, index))
+        return out
+
+    def _subscript(self, atom: Atom, index: Value) -> Value:
+        keys = index.consts()
+        if isinstance(atom, Seq) and keys is not None:
+            out = BOTTOM
+            for k in keys:
+                if isinstance(k, int) and not isinstance(k, bool) and -len(atom.items) <= k < len(atom.items):
+                    out = out.join(atom.items[k])
+                else:
+                    return TOP
+            return out
+        if isinstance(atom, Seq):
+            return join_all(atom.items) if not index.is_top and all(
+                isinstance(a, Const) for a in index) else TOP
+        if isinstance(atom, Coll):
+            return atom.elem
+        if isinstance(atom, DictAtom):
+            if keys is None:
+                return join_all(v for _, v in atom.items)
+            out = BOTTOM
+            for k, v in atom.items:
+                kc = k.consts()
+                if kc is None or any(x in kc for x in keys):
+                    out = out.join(v)
+            return out
+        if isinstance(atom, Const) and isinstance(atom.value, (str, bytes, tuple)):
+            return fold(lambda s, i: s[i], [atoms([atom]), index])
+        return TOP
+
+    def e_Slice(self, node: ast.Slice) -> Value:
+        return TOP
+
+    def e_Starred(self, node: ast.Starred) -> Value:
+        return self.eval(node.value)
+
+    def e_Lambda(self, node: ast.Lambda) -> Value:
+        for default in node.args.defaults:
+            self.eval(default)
+        return atoms([FuncAtom(self.program.fid_of[id(node)])])
+
+    def e_Await(self, node: ast.Await) -> Value:
+        return self.eval(node.value)
+
+    def e_Yield(self, node: ast.Yield) -> Value:
+        if node.value is not None:
+            self.eval(node.value)
+        return TOP
+
+    e_YieldFrom = e_Yield
+
+    def e_ListComp(self, node) -> Value:
+        overlay: dict[str, Value] = {}
+        self.frame.comp.append(overlay)
+        try:
+            for gen in node.generators:
+                elem = self.iter_elem(self.eval(gen.iter))
+                for name_node in ast.walk(gen.target):
+                    if isinstance(name_node, ast.Name):
+                        overlay[name_node.id] = TOP
+                self.assign(gen.target, elem)
+                for cond in gen.ifs:
+                    self.eval(cond)
+            if isinstance(node, ast.DictComp):
+                self.eval(node.key)
+                elem = self.eval(node.value)
+            else:
+                elem = self.eval(node.elt)
+        finally:
+            self.frame.comp.pop()
+        kind = {ast.ListComp: "list", ast.SetComp: "set", ast.DictComp: "dict"}.get(
+            type(node), "gen")
+        return atoms([Coll(kind, elem)])
+
+    e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
+
+    def e_Call(self, node: ast.Call) -> Value:
+        if isinstance(node.func, ast.Name) and node.func.id == "super" \
+                and self.load_name("super") == atoms([Extern("builtins.super")]):
+            return self.super_value(node)
+        func = self.eval(node.func)
+        args: list[Value] = []
+        star = False
+        for arg in node.args:
+            if isinstance(arg, ast.Starred):
+                inner = self.eval(arg.value)
+                seqs = [a for a in inner if isinstance(a, Seq)]
+                if len(seqs) == 1 and len(list(inner)) == 1:
+                    args.extend(seqs[0].items)
+                else:
+                    star = True
+            else:
+                args.append(self.eval(arg))
+        kwargs: dict[str, Value] = {}
+        for kw in node.keywords:
+            value = self.eval(kw.value)
+            if kw.arg is not None:
+                kwargs[kw.arg] = value
+            else:
+                dicts = [a for a in value if isinstance(a, DictAtom)]
+                if len(dicts) == 1 and len(list(value)) == 1 and all(
+                        k.strings() and len(k.strings()) == 1 for k, _ in dicts[0].items):
+                    for k, v in dicts[0].items:
+                        kwargs[k.strings()[0]] = v
+                else:
+                    star = True
+        return self.call(func, Args(args, kwargs, star), node)
+
+    # -- helpers ------------------------------------------------------------------------------
+    def iter_elem(self, value: Value) -> Value:
+        if value.is_top:
+            return TOP
+        out = BOTTOM
+        for atom in value:
+            if isinstance(atom, Seq):
+                out = out.join(join_all(atom.items))
+            elif isinstance(atom, Coll):
+                out = out.join(atom.elem)
+            elif isinstance(atom, DictAtom):
+                out = out.join(join_all(k for k, _ in atom.items))
+            elif isinstance(atom, Const) and isinstance(atom.value, str):
+                out = out.join(fold(lambda s: s, [atoms([atom])]) if len(atom.value) == 1 else TOP)
+            else:
+                return TOP
+        return out
+
+    @staticmethod
+    def truth(value: Value, by_default: bool = True) -> bool | None:
+        """Python truthiness if the value decides it, else ``None``.
+
+        A *soft* value (an overridable default) decides value choices
+        (``a if opt else b`` names what runs by default) but not control flow: code
+        under ``if opt:`` exists in some configuration, so both branches are explored.
+        """
+        if value.is_top or value.is_bottom or (value.soft and not by_default):
+            return None
+        seen = set()
+        for atom in value:
+            if isinstance(atom, Const):
+                seen.add(bool(atom.value))
+            elif isinstance(atom, Seq):
+                seen.add(bool(atom.items))
+            elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)):
+                seen.add(True)
+            else:
+                return None
+            if len(seen) > 1:
+                return None
+        return seen.pop()
+
+
+def _const_tuples(value: Value) -> list[tuple] | None:
+    """Concrete tuples for a value whose atoms are tuples of constants (for ``%`` formatting)."""
+    if value.is_top:
+        return None
+    out: list[tuple] = []
+    for atom in value:
+        if not isinstance(atom, Seq):
+            return None
+        pools = [v.consts() for v in atom.items]
+        if any(p is None for p in pools):
+            return None
+        for combo in itertools.product(*pools):
+            out.append(tuple(combo))
+            if len(out) > MAX_ATOMS:
+                return None
+    return out

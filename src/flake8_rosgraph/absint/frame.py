@@ -1,0 +1,26 @@
+"""Where evaluation happens: the task, module, function or class body and block being interpreted."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .engine import Task
+from .program import Class, Function, Module
+from .values import BOTTOM, Value
+
+Env = dict  # variable name -> Value
+
+
+@dataclass
+class Frame:
+    """Where evaluation currently happens: task, module, function or class body, block."""
+
+    task: Task
+    module: Module
+    func: Function | None = None
+    cls: Class | None = None
+    dominators: frozenset[int] = frozenset()
+    block: int = 0
+    env: Env = field(default_factory=dict)
+    effects: dict = field(default_factory=dict)
+    comp: list[dict[str, Value]] = field(default_factory=list)
+    ret: Value = BOTTOM

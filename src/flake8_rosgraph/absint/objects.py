@@ -1,0 +1,173 @@
+"""Objects and classes: attribute lookup along the MRO, binding of methods, attribute stores.
+
+Instance fields live in the engine's heap by allocation site; class attributes by
+class; library classes answer from their models. ``super()`` resolves along the
+receiver's C3 linearisation.
+"""
+from __future__ import annotations
+
+
+from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
+                     ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms)
+from .calls import Args
+
+
+class ObjectSemantics:
+    """Attribute and class semantics, mixed into :class:`~.interpreter.Interpreter`."""
+
+    def load_attr(self, value: Value, attr: str) -> Value:
+        if value.is_top:
+            return TOP
+        out = BOTTOM
+        for atom in value:
+            out = out.join(self._attr_of(atom, attr))
+            if out.is_top:
+                return out
+        return out
+
+    def _attr_of(self, atom: Atom, attr: str) -> Value:
+        task = self.frame.task
+        if isinstance(atom, Obj):
+            field_value = self.an.read(("a", atom.site, attr), task)
+            found = self.class_attr(self.mro(atom.cls), attr, atom)
+            if found is None:
+                if field_value.is_bottom and attr not in self.program.stored_attrs \
+                        and not self._all_user(atom.cls):
+                    return TOP  # nothing here assigns it: the library's attribute
+                return field_value
+            return field_value.join(found)
+        if isinstance(atom, ClassAtom):
+            found = self.class_attr(self.mro(atom), attr, None)
+            return TOP if found is None else found
+        if isinstance(atom, SuperAtom):
+            cls_of = atom.receiver.cls if isinstance(atom.receiver, Obj) else atom.receiver
+            order = self.mro(cls_of)
+            here = ClassAtom(atom.cid)
+            if here in order:
+                order = order[order.index(here) + 1:]
+            found = self.class_attr(order, attr, atom.receiver)
+            return TOP if found is None else found
+        if isinstance(atom, ModuleAtom):
+            return self.import_member(atom.name, attr)
+        if isinstance(atom, Extern):
+            model = self.lib.classes.get(atom.qualname)
+            if model is not None and self.lib.method(atom.qualname, attr):
+                return atoms([Extern(f"{atom.qualname}.{attr}")])
+            return self.extern(f"{atom.qualname}.{attr}")
+        if isinstance(atom, Record):
+            field_value = atom.field(attr)
+            if field_value is not None:
+                return field_value
+            if self.lib.method(atom.qualname, attr):
+                return atoms([ExternBound(atom, f"{atom.qualname}.{attr}")])
+            return TOP
+        if isinstance(atom, Const) and isinstance(atom.value, str):
+            return atoms([ExternBound(atom, "builtins.str." + attr)])
+        if atom == Const.of(None):
+            return BOTTOM  # AttributeError at run time: no value flows on
+        if isinstance(atom, (Seq, Coll, DictAtom)):
+            return atoms([ExternBound(atom, "builtins.container." + attr)])
+        return TOP
+
+    def _all_user(self, cls: Atom) -> bool:
+        return all(isinstance(c, ClassAtom) or c == Extern("builtins.object")
+                   for c in self.mro(cls))
+
+    def class_attr(self, order: list[Atom], attr: str, receiver: Atom | None) -> Value | None:
+        """Look ``attr`` up along a method resolution order; bind functions to ``receiver``."""
+        for cls in order:
+            if isinstance(cls, ClassAtom):
+                value = self.an.read(("k", cls.cid, attr), self.frame.task)
+                if value.is_bottom:
+                    continue
+                return self._bind(value, receiver, cls)
+            model_method = self.lib.classes.get(cls.qualname)
+            if model_method is not None and attr in model_method.methods:
+                qual = f"{cls.qualname}.{attr}"
+                return atoms([ExternBound(receiver, qual) if receiver is not None else Extern(qual)])
+            constant = self.lib.constants.get(f"{cls.qualname}.{attr}")
+            if constant is not None:
+                return constant
+        return None
+
+    def _bind(self, value: Value, receiver: Atom | None, owner: ClassAtom) -> Value:
+        if value.is_top:
+            return value
+        out = []
+        for atom in value:
+            if isinstance(atom, FuncAtom):
+                kind = self.program.functions[atom.fid].kind
+                if kind == "staticmethod":
+                    out.append(atom)
+                elif kind == "classmethod":
+                    recv = receiver.cls if isinstance(receiver, Obj) else owner
+                    out.append(BoundMethod(recv, atom.fid))
+                elif receiver is None:
+                    out.append(atom)
+                elif kind == "property":
+                    return self.call(atoms([BoundMethod(receiver, atom.fid)]), Args([], {}, False),
+                                     None)
+                else:
+                    out.append(BoundMethod(receiver, atom.fid))
+            else:
+                out.append(atom)
+        return atoms(out)
+
+    def store_attr(self, target: Value, attr: str, value: Value) -> None:
+        for atom in target:
+            if isinstance(atom, Obj):
+                self.an.write(("a", atom.site, attr), value)
+            elif isinstance(atom, ClassAtom):
+                self.an.write(("k", atom.cid, attr), value)
+            elif isinstance(atom, ModuleAtom):
+                self.an.write(("g", atom.name, attr), value)
+
+    # -- classes ----------------------------------------------------------------------------
+    def user_bases(self, cid: int) -> list[int]:
+        value = self.an.heap.get(("bases", cid), BOTTOM)
+        return [a.cid for a in _flatten_bases(value) if isinstance(a, ClassAtom)]
+
+    def library_bases(self, cid: int) -> list[str]:
+        return [a.qualname for a in self.mro(ClassAtom(cid)) if isinstance(a, Extern)]
+
+    def mro(self, cls: Atom, _seen: frozenset = frozenset()) -> list[Atom]:
+        """C3 linearisation over user classes (bases as analysed) and modelled library classes."""
+        if isinstance(cls, Extern):
+            return [Extern(q) for q in self.lib.mro(cls.qualname)]
+        if not isinstance(cls, ClassAtom) or cls in _seen:
+            return []
+        key = ("bases", cls.cid)
+        bases_value = self.an.read(key, self.frame.task) if self.frame else \
+            self.an.heap.get(key, BOTTOM)
+        bases = _flatten_bases(bases_value)
+        seqs = [self.mro(b, _seen | {cls}) for b in bases] + [bases]
+        return [cls] + _c3_merge(seqs)
+
+
+def _flatten_bases(value: Value) -> list[Atom]:
+    """Base classes in source order from the analysed ``(base, …)`` tuples of a class."""
+    out: list[Atom] = []
+    for seq in sorted((a for a in value if isinstance(a, Seq)), key=repr):
+        for item in seq.items:
+            for atom in sorted(item, key=repr):
+                if isinstance(atom, (ClassAtom, Extern)) and atom not in out:
+                    out.append(atom)
+    return out
+
+
+def _c3_merge(seqs: list[list[Atom]]) -> list[Atom]:
+    seqs = [list(s) for s in seqs if s]
+    out: list[Atom] = []
+    while seqs:
+        for seq in seqs:
+            head = seq[0]
+            if not any(head in s[1:] for s in seqs):
+                break
+        else:  # inconsistent hierarchy: fall back to depth-first order
+            for seq in seqs:
+                out.extend(x for x in seq if x not in out)
+            return out
+        out.append(head)
+        seqs = [[x for x in s if x != head] for s in seqs]
+        seqs = [s for s in seqs if s]
+    return out
