@@ -245,3 +245,20 @@ def test_library_state_stored_on_an_object_is_loaded_back(analyse):
     assert a.strings("m", "topic") == ["talker/status"]
     assert a.value("m", "period").consts() == [0.5]
     assert a.strings("m", "plain") == ["plain"]
+
+
+def test_a_factory_called_twice_makes_two_objects(analyse):
+    a = analyse({"m.py": """
+        class Box:
+            pass
+        def make(label):
+            box = Box()
+            box.label = label
+            return box
+        first = make('a')
+        second = make('b')
+        first_label = first.label
+        second_label = second.label
+    """})
+    assert a.strings("m", "first_label") == ["a"]
+    assert a.strings("m", "second_label") == ["b"]

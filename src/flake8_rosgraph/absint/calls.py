@@ -198,9 +198,16 @@ class CallSemantics:
                         self.schedule_callback(atom)
 
     def _site(self, node) -> str:
+        """The allocation site of an object created at ``node``: the source position, plus
+        the calling context inside functions, so that a factory called twice yields two
+        objects (one level of heap cloning, bounded by the contexts per function)."""
         line = getattr(node, "lineno", 0)
         col = getattr(node, "col_offset", 0)
-        return f"{self.frame.module.path}:{line}:{col}"
+        site = f"{self.frame.module.path}:{line}:{col}"
+        task = self.frame.task
+        if task[0] == "fn":
+            site += f"@{self.an.context_index(task[1], task[2])}"
+        return site
 
     # -- library code ---------------------------------------------------------------------------
     def call_extern(self, qualname: str, args: "Args", node) -> Value:

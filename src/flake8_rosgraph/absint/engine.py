@@ -123,6 +123,13 @@ class Analysis:
             self.enqueue(task)
         return task
 
+    def context_index(self, fid: int, ctx: tuple) -> int:
+        """A stable small number for a context of ``fid`` (its order of discovery)."""
+        for index, known in enumerate(self.contexts.get(fid, ())):
+            if known == ctx:
+                return index
+        return 0
+
     def call_summary(self, fid: int, ctx: tuple, caller: Task) -> Value:
         task = self.function_task(fid, ctx)
         return self.read(("ret", task), caller)
