@@ -20,7 +20,23 @@ HERE = Path(__file__).resolve().parent
 FAKE_SITE = HERE / "fake_site"
 REPO = HERE.parents[1]
 EXAMPLES = REPO / "examples"
-SARIF_SCHEMA = REPO.parent / "shared" / "schemas" / "sarif-schema-2.1.0.json"
+
+
+def _sarif_schema() -> Path:
+    """The official SARIF 2.1.0 schema, which lives outside the project (never copied in):
+    ``$ROSGRAPH_SARIF_SCHEMA``, else ``shared/schemas/`` beside the repository or beside
+    any folder above it (CI runs in a fresh clone somewhere else on the same machine)."""
+    env = os.environ.get("ROSGRAPH_SARIF_SCHEMA")
+    if env:
+        return Path(env)
+    relative = Path("shared") / "schemas" / "sarif-schema-2.1.0.json"
+    for folder in [REPO, *REPO.parents, Path("/work")]:
+        if (folder / relative).is_file():
+            return folder / relative
+    return REPO.parent / relative
+
+
+SARIF_SCHEMA = _sarif_schema()
 
 #: The standard fake workspace: two packages, findings the fake rules report:
 #: talker.py:6 ROS001 '/orphan', talker.py:7 ROS002 '/loop' (publisher at line 8),
