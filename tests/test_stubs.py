@@ -32,7 +32,7 @@ SHIPPED_NAMES = [name for name, _ in SHIPPED]
 
 #: The arguments the graph builder reads, per effect kind (docs/stubs.md, "Effects").
 EFFECT_ARGS: dict[str, frozenset[str]] = {
-    "node": frozenset({"target", "name", "namespace", "allow_undeclared"}),
+    "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare"}),
     "publisher": frozenset({"node", "topic", "type", "qos", "via"}),
     "subscription": frozenset({"node", "topic", "type", "qos", "callback", "via"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
@@ -43,6 +43,9 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "parameter": frozenset({"node", "name", "default"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node", "name", "names"}),
+    # launch files: read back by flake8_rosgraph.launch, not by the graph builder
+    "launch_node": frozenset({"package", "executable"}),
+    "launch_description": frozenset({"description"}),
 }
 #: Arguments without which an effect of that kind cannot become an entity.
 EFFECT_REQUIRED: dict[str, frozenset[str]] = {
@@ -52,6 +55,8 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "parameter": frozenset({"node", "name"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node"}),
+    "launch_node": frozenset(),
+    "launch_description": frozenset(),
 }
 
 

@@ -41,6 +41,18 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     return library, diagnostics
 
 
+def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
+                    diagnostics: list[Diagnostic]) -> list:
+    """The workspace's launch systems; a failure here must not cost the code-level graph."""
+    from .launch import systems_for
+    try:
+        return systems_for(root if root.is_dir() else root.parent, graph, analysis)
+    except Exception as exc:
+        diagnostics.append(Diagnostic("", 0, f"launch files not analysed: internal error: "
+                                              f"{type(exc).__name__}: {exc}", "error"))
+        return []
+
+
 def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
     """The ROS computation graph of the Python code under ``root``; never raises."""
     root = Path(root)
@@ -56,6 +68,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
         analysis.run()
         diagnostics.extend(Diagnostic(d.path, d.line, d.message) for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
+        graph.systems = _launch_systems(root, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "

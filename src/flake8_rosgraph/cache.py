@@ -268,9 +268,13 @@ def build_report(root: Path, settings: Settings) -> WorkspaceReport:
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
+    from .launch import judged_graph
+
     graph = build_graph(root, tuple(settings.stub_files))
     config = RuleConfig(external_names=frozenset(settings.external_topics))
-    findings = run_rules(graph, config, select=[rule.code for rule in RULES])
+    # Judged as launched: a topic connected after remapping is connected.
+    findings = run_rules(judged_graph(graph, graph.systems), config,
+                         select=[rule.code for rule in RULES])
     return WorkspaceReport(root, tuple(sorted(set(findings))), tuple(sorted(set(graph.diagnostics))))
 
 

@@ -7,6 +7,7 @@ line, and into the JSON output's ``diagnostics`` list.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
@@ -16,7 +17,7 @@ from . import __version__, check_cli
 def _graph(args: argparse.Namespace) -> int:
     from .analysis import build_graph
     from .graph.dot import to_dot
-    from .graph.json_out import to_json
+    from .launch import apply, graph_to_json_obj, system_to_json
 
     root = Path(args.path)
     if not root.exists():
@@ -26,12 +27,37 @@ def _graph(args: argparse.Namespace) -> int:
     for diag in graph.diagnostics:
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(f"{where}{diag.severity}: {diag.message}", file=sys.stderr)
-    text = to_json(graph) if args.format == "json" else to_dot(graph)
+    shown = graph
+    if args.launch:
+        system = _find_system(graph, root, Path(args.launch))
+        if system is None:
+            print(f"flake8-rosgraph: error: {args.launch} is not a launch file of {args.path}",
+                  file=sys.stderr)
+            return 2
+        shown = apply(graph, system)
+        shown.diagnostics = graph.diagnostics
+    if args.format == "dot":
+        text = to_dot(shown)
+    else:
+        obj = graph_to_json_obj(shown)
+        if not args.launch:
+            obj["systems"] = [system_to_json(s) for s in graph.systems]
+        text = json.dumps(obj, indent=1, ensure_ascii=False) + "\n"
     if args.output:
         Path(args.output).write_text(text, encoding="utf-8")
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _find_system(graph, root: Path, launch_file: Path):
+    """The system of ``launch_file`` among those found under ``root``."""
+    base = root.resolve() if root.is_dir() else root.resolve().parent
+    try:
+        wanted = launch_file.resolve().relative_to(base).as_posix()
+    except ValueError:
+        return None
+    return next((s for s in graph.systems if s.launch_file == wanted), None)
 
 
 def make_parser() -> argparse.ArgumentParser:
@@ -45,6 +71,9 @@ def make_parser() -> argparse.ArgumentParser:
     graph.add_argument("--output", "-o", help="write to this file instead of stdout")
     graph.add_argument("--stubs", action="append", default=[], metavar="FILE",
                        help="extra library model (TOML); repeatable")
+    graph.add_argument("--launch", metavar="FILE",
+                       help="print the system this launch file starts (names, namespaces and "
+                            "remappings applied) instead of the code-level graph")
     graph.set_defaults(run=_graph)
     check_cli.add_parser(sub)
     return parser

@@ -220,8 +220,10 @@ class CallSemantics:
             return self.apply_model(fn, None, args, node)
         if qualname in self.lib.classes:
             if self.lib.class_flag(qualname, "record"):
+                # A record holds its constructor's arguments by name (``self`` excluded).
                 init = self.lib.method(qualname, "__init__")
-                bound = self.bind_model(init, None, args) if init else {}
+                bound = self.bind_model(init, Const.of(None), args) if init else {}
+                bound.pop("self", None)
                 return atoms([Record(qualname, tuple(sorted(bound.items())))])
             obj = Obj(self._site(node), Extern(qualname))
             init = self.lib.method(qualname, "__init__")
@@ -425,17 +427,15 @@ class CallSemantics:
 
     def call_container(self, receiver: Atom, name: str, args: "Args") -> Value:
         if isinstance(receiver, DictAtom):
-            keys = join_all(k for k, _ in receiver.items)
-            values = join_all(v for _, v in receiver.items)
             if name == "get":
                 default = args.pos[1] if len(args.pos) > 1 else const(None)
                 return self._subscript(receiver, args.pos[0] if args.pos else TOP).join(default)
-            if name == "items":
-                return atoms([Coll("list", atoms([Seq("tuple", (keys, values))]))])
+            if name == "items":  # pairs stay paired
+                return atoms([Seq("list", tuple(atoms([Seq("tuple", kv)]) for kv in receiver.items))])
             if name == "keys":
-                return atoms([Coll("list", keys)])
+                return atoms([Seq("list", tuple(k for k, _ in receiver.items))])
             if name == "values":
-                return atoms([Coll("list", values)])
+                return atoms([Seq("list", tuple(v for _, v in receiver.items))])
         if name in ("copy",):
             return atoms([receiver])
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):

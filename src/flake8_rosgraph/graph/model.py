@@ -71,6 +71,9 @@ class RosNode:
     conditional: bool = False
     invalid: str | None = None
     entities: list[Entity] = field(default_factory=list)
+    #: Where a launch file starts this node ({"file", "line", "package", "executable", …});
+    #: ``None`` for the node as written in code.
+    launch: dict[str, Any] | None = None
 
     @property
     def fqn(self) -> str | None:
@@ -98,6 +101,8 @@ class RosGraph:
 
     nodes: list[RosNode] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    #: The launch systems found in the workspace (``flake8_rosgraph.launch.System``).
+    systems: list[Any] = field(default_factory=list)
 
     def entities(self, kind: str | None = None):
         """Yield ``(node, entity)`` pairs, optionally of one kind."""

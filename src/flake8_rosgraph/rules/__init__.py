@@ -1,4 +1,4 @@
-"""The graph rules ROS001–ROS010: one module per rule, run together over one extracted graph.
+"""The graph rules ROS001–ROS010 and ROS201–ROS204: one module per rule, run together over one extracted graph.
 
 ``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
 SARIF writer, the generated ``docs/rules.md``) reads, in code order.
@@ -19,6 +19,10 @@ from .ros007_duplicate_node_name import DuplicateNodeName
 from .ros008_service_client_without_server import ServiceClientWithoutServer
 from .ros009_action_client_without_server import ActionClientWithoutServer
 from .ros010_unresolved_name import UnresolvedName
+from .ros201_unknown_executable import UnknownExecutable
+from .ros202_ineffective_remap import IneffectiveRemap
+from .ros203_invalid_launch_name import InvalidLaunchName
+from .ros204_unknown_parameter import UnknownParameter
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -31,6 +35,10 @@ RULES: tuple[Rule, ...] = (
     ServiceClientWithoutServer(),
     ActionClientWithoutServer(),
     UnresolvedName(),
+    UnknownExecutable(),
+    IneffectiveRemap(),
+    InvalidLaunchName(),
+    UnknownParameter(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}

@@ -1,0 +1,93 @@
+"""Finding the launch files of a workspace and reading each with its front end.
+
+Python launch files are the analysed modules that define a module-level
+``generate_launch_description``; XML and YAML ones are ``*.xml``/``*.yaml``
+files whose name says ``launch`` or that sit in a ``launch`` folder, and whose
+content is a ``<launch>`` element or a top-level ``launch:`` list.
+"""
+from __future__ import annotations
+
+import os
+import xml.parsers.expat
+from pathlib import Path
+
+from ..absint.engine import Analysis
+from ..workspace import SKIP_DIRS
+from .actions import Action
+from .python_front import ENTRY_FUNCTION, read_python_launch
+from .xml_front import parse_xml, read_xml_launch
+from .yaml_front import read_yaml_launch
+from .yaml_reader import YamlError
+
+FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
+
+
+def python_launch_files(analysis: Analysis | None) -> list[str]:
+    if analysis is None:
+        return []
+    return sorted({f.module.path for f in analysis.program.functions
+                   if f.parent is None and f.cls is None and f.qualname == ENTRY_FUNCTION})
+
+
+def _looks_like_launch(path: Path) -> bool:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    if path.suffix == ".xml":
+        try:
+            return parse_xml(text).tag == "launch"
+        except (xml.parsers.expat.ExpatError, IndexError):
+            return False
+    return any(line.rstrip() == "launch:" for line in text.splitlines())
+
+
+def frontend_launch_files(root: Path) -> list[str]:
+    found: list[str] = []
+    if not root.is_dir():
+        return found
+    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        in_launch_dir = Path(dirpath).name == "launch"
+        for name in sorted(filenames):
+            path = Path(dirpath) / name
+            if path.suffix in FRONTEND_SUFFIXES and ("launch" in name or in_launch_dir) \
+                    and _looks_like_launch(path):
+                found.append(path.relative_to(root).as_posix())
+    return sorted(found)
+
+
+class LaunchReader:
+    """Reads any launch file by extension, once."""
+
+    def __init__(self, root: Path, analysis: Analysis | None) -> None:
+        self.root = Path(root)
+        self.analysis = analysis
+        self._cache: dict[str, tuple[list[Action], str | None]] = {}
+
+    def __call__(self, path: str) -> tuple[list[Action], str | None]:
+        if path not in self._cache:
+            self._cache[path] = self._read(path)
+        return self._cache[path]
+
+    def _read(self, path: str) -> tuple[list[Action], str | None]:
+        if path.endswith(".py"):
+            if self.analysis is None:
+                return [], "Python launch files need the analysis"
+            return read_python_launch(self.analysis, path)
+        try:
+            text = (self.root / path).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            return [], f"cannot read: {exc}"
+        try:
+            if path.endswith(".xml"):
+                return read_xml_launch(path, text), None
+            if path.endswith((".yaml", ".yml")):
+                return read_yaml_launch(path, text), None
+        except xml.parsers.expat.ExpatError as exc:
+            return [], f"XML error: {exc}"
+        except YamlError as exc:
+            return [], f"YAML error: {exc}"
+        except IndexError:
+            return [], "empty XML document"
+        return [], "not a launch file format this tool reads"

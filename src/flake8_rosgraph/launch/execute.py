@@ -1,0 +1,270 @@
+"""Launch semantics: run an action tree in scopes, as ``ros2 launch`` would, without running anything.
+
+What each action does to the scope follows launch / launch_ros:
+``DeclareLaunchArgument`` sets a default only when no value was passed;
+``<let>``/``SetLaunchConfiguration`` overrides; a scoped ``GroupAction``
+copies the scope for its children; ``PushRosNamespace`` prefixes a relative
+namespace onto the pushed one (``launch_ros.utilities.prefix_namespace``);
+``SetRemap``/``SetParameter`` apply to every later node in the scope, before
+the node's own remaps and parameters; ``IncludeLaunchDescription`` runs the
+included file in a copy of the scope with its ``launch_arguments`` set; a
+node's ``namespace`` is prefixed by the pushed one unless absolute.
+
+Includes across packages resolve inside the workspace (``find-pkg-share``
+maps to the package's source folder; a file installed under another
+sub-folder is found by name when that name is unique in the package).  What
+cannot be resolved is a :class:`~flake8_rosgraph.graph.model.Diagnostic` on
+the system, not a guess.
+"""
+from __future__ import annotations
+
+import posixpath
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Callable
+
+from ..graph.model import Diagnostic, Location
+from .actions import (Action, DeclareArgument, GroupAction, Include, Join, NodeAction, PkgShare,
+                      PushNamespace, SetConfiguration, SetParameter, SetRemap, Subst, Text, ThisDir,
+                      Unknown, Unsupported, Var)
+from .model import ExecutableRef, LaunchedNode, ParamFileRef, ParamValue, Remap, System
+from .packages import PackageIndex
+
+#: Include depth at which a (probably recursive) include chain is cut.
+MAX_INCLUDE_DEPTH = 16
+
+
+class Unresolved(Exception):
+    """A substitution without a static value; the message says why."""
+
+
+@dataclass
+class Scope:
+    file: str
+    configs: dict[str, str | None] = field(default_factory=dict)
+    #: Launch arguments came from an include whose argument list is unknown.
+    opaque: bool = False
+    namespace: str | None = None          # the pushed ROS namespace, ``None``: none pushed
+    namespace_unknown: str | None = None  # why the pushed namespace is unknown
+    remaps: list[Remap] = field(default_factory=list)
+    params: list[ParamValue] = field(default_factory=list)
+    conditional: bool = False
+
+    def child(self, **changes) -> "Scope":
+        return replace(self, configs=dict(self.configs), remaps=list(self.remaps),
+                       params=list(self.params), **changes)
+
+
+def prefix_namespace(base: str | None, ns: str | None) -> str | None:
+    """launch_ros ``prefix_namespace`` followed by ``make_namespace_absolute``."""
+    if base is not None and ns is not None:
+        combined = ns if ns.startswith("/") else ("/" + ns if base == "/" else base + "/" + ns)
+    else:
+        combined = base if base is not None else ns
+    if combined is None:
+        return None
+    return combined if combined.startswith("/") else "/" + combined
+
+
+#: ``(package, executable) -> ExecutableRef``, supplied by whoever knows the code graph.
+TargetResolver = Callable[[str | None, str | None], ExecutableRef]
+#: ``root-relative path -> (actions, problem)``.
+FileReader = Callable[[str], "tuple[list[Action], str | None]"]
+
+
+class Executor:
+    def __init__(self, root: Path, packages: PackageIndex, read: FileReader,
+                 resolve_target: TargetResolver) -> None:
+        self.root = Path(root)
+        self.packages = packages
+        self.read = read
+        self.resolve_target = resolve_target
+
+    def system(self, path: str) -> System:
+        system = System(path)
+        scope = Scope(path)
+        self.run_file(path, scope, system, ())
+        system.arguments = dict(sorted(scope.configs.items()))
+        return system
+
+    def run_file(self, path: str, scope: Scope, system: System, stack: tuple[str, ...]) -> None:
+        if path not in system.files:
+            system.files.append(path)
+        actions, problem = self.read(path)
+        if problem:
+            system.problems.append(Diagnostic(path, 1, f"launch file not read: {problem}"))
+        self.declare(actions, scope)
+        self.run(actions, scope, system, stack + (path,))
+
+    def declare(self, actions: list[Action], scope: Scope) -> None:
+        """Argument defaults first, as the values are looked up when nodes run, after all declarations."""
+        for action in actions:
+            if isinstance(action, DeclareArgument) and action.name not in scope.configs \
+                    and action.default is not None and not scope.opaque:
+                scope.configs[action.name] = self.value_or_none(action.default, scope)
+            elif isinstance(action, GroupAction):
+                self.declare(action.actions, scope)
+
+    # -- substitutions ---------------------------------------------------------------------------
+    def value(self, subst: Subst, scope: Scope) -> str:
+        if isinstance(subst, Text):
+            return subst.text
+        if isinstance(subst, Var):
+            if subst.name in scope.configs:
+                found = scope.configs[subst.name]
+                if found is None:
+                    raise Unresolved(f"launch argument '{subst.name}' has no static value")
+                return found
+            if subst.default is not None:
+                return self.value(subst.default, scope)
+            if scope.opaque:
+                raise Unresolved(f"launch argument '{subst.name}' comes from an include "
+                                 f"whose arguments are unknown")
+            raise Unresolved(f"launch argument '{subst.name}' has no default")
+        if isinstance(subst, PkgShare):
+            package = self.value(subst.package, scope)
+            found = self.packages.packages.get(package)
+            if found is None:
+                raise Unresolved(f"package '{package}' is not in the workspace")
+            return found.path
+        if isinstance(subst, ThisDir):
+            return posixpath.dirname(scope.file) or "."
+        if isinstance(subst, Join):
+            parts = [self.value(p, scope) for p in subst.parts]
+            if subst.sep == "/":
+                return posixpath.join(*parts) if parts else ""
+            return "".join(parts)
+        if isinstance(subst, Unknown):
+            raise Unresolved(subst.reason)
+        raise Unresolved(f"unsupported substitution {type(subst).__name__}")
+
+    def value_or_none(self, subst: Subst, scope: Scope) -> str | None:
+        try:
+            return self.value(subst, scope)
+        except Unresolved:
+            return None
+
+    def locate(self, written: str) -> str | None:
+        """A resolved file path as a root-relative path of an existing file, or ``None``."""
+        path = posixpath.normpath(written)
+        if path.startswith("/") or path.startswith(".."):
+            return None
+        if (self.root / path).is_file():
+            return path
+        owners = [p for p in self.packages.packages.values()
+                  if p.path == "." or path == p.path or path.startswith(p.path + "/")]
+        if not owners:
+            return None
+        package = max(owners, key=lambda p: len(p.path))
+        folder = self.root / package.path
+        name = posixpath.basename(path)
+        matches = sorted(p for p in folder.rglob(name) if p.is_file()
+                         and not any(part in ("build", "install", "log") or part.startswith(".")
+                                     for part in p.relative_to(folder).parts[:-1]))
+        if len(matches) != 1:
+            return None
+        return matches[0].relative_to(self.root).as_posix()
+
+    # -- actions ---------------------------------------------------------------------------------
+    def run(self, actions: list[Action], scope: Scope, system: System, stack: tuple[str, ...]) -> None:
+        for action in actions:
+            self.run_one(action, scope, system, stack)
+
+    def run_one(self, action: Action, scope: Scope, system: System, stack: tuple[str, ...]) -> None:
+        if isinstance(action, NodeAction):
+            system.nodes.append(self.node(action, scope))
+        elif isinstance(action, GroupAction):
+            inner = scope.child() if action.scoped or action.condition is not None else scope
+            if action.condition is not None:
+                inner.conditional = True  # (an unscoped conditional group keeps its changes to itself)
+            self.run(action.actions, inner, system, stack)
+        elif isinstance(action, PushNamespace):
+            try:
+                pushed = self.value(action.namespace, scope)
+                scope.namespace = prefix_namespace(scope.namespace, pushed)
+            except Unresolved as exc:
+                scope.namespace_unknown = str(exc)
+        elif isinstance(action, SetRemap):
+            try:
+                scope.remaps.append(Remap(self.value(action.source, scope),
+                                          self.value(action.target, scope), action.location,
+                                          from_scope=True))
+            except Unresolved as exc:
+                system.problems.append(_problem(action.location, f"SetRemap not followed: {exc}"))
+        elif isinstance(action, SetParameter):
+            scope.params.append(ParamValue(action.name, action.value, action.location, from_scope=True))
+        elif isinstance(action, DeclareArgument):
+            if action.name not in scope.configs and action.default is not None and not scope.opaque:
+                scope.configs[action.name] = self.value_or_none(action.default, scope)
+        elif isinstance(action, SetConfiguration):
+            scope.configs[action.name] = self.value_or_none(action.value, scope)
+        elif isinstance(action, Include):
+            self.include(action, scope, system, stack)
+        elif isinstance(action, Unsupported):
+            system.problems.append(_problem(
+                action.location, f"{action.what} is not followed: nodes it starts are not in the system"))
+
+    def include(self, action: Include, scope: Scope, system: System, stack: tuple[str, ...]) -> None:
+        try:
+            written = self.value(action.path, scope)
+        except Unresolved as exc:
+            system.problems.append(_problem(action.location, f"include not resolved: {exc}"))
+            return
+        path = self.locate(written)
+        if path is None:
+            system.problems.append(_problem(
+                action.location, f"include not resolved: '{written}' is not a file in the workspace"))
+            return
+        if path in stack or len(stack) >= MAX_INCLUDE_DEPTH:
+            system.problems.append(_problem(action.location, f"include of '{path}' is recursive"))
+            return
+        inner = scope.child(file=path, conditional=scope.conditional or action.condition is not None)
+        if action.arguments is None:
+            inner.opaque = True
+        else:
+            for name, value in action.arguments:
+                inner.configs[name] = self.value_or_none(value, scope)
+        self.run_file(path, inner, system, stack)
+
+    def node(self, action: NodeAction, scope: Scope) -> LaunchedNode:
+        unresolved = list(action.unresolved)
+
+        def get(subst: Subst | None, what: str) -> str | None:
+            if subst is None:
+                return None
+            try:
+                return self.value(subst, scope)
+            except Unresolved as exc:
+                unresolved.append(f"{what}: {exc}")
+                return None
+
+        package = get(action.package, "package")
+        executable = get(action.executable, "executable")
+        name = get(action.name, "name")
+        own_ns = get(action.namespace, "namespace")
+        if scope.namespace_unknown is not None:
+            unresolved.append(f"namespace: {scope.namespace_unknown}")
+            namespace = None
+        else:
+            namespace = prefix_namespace(scope.namespace, own_ns)
+        remaps = list(scope.remaps)
+        for source, target, location in action.remaps:
+            src, dst = get(source, "remap"), get(target, "remap")
+            if src is not None and dst is not None:
+                remaps.append(Remap(src, dst, location))
+        params = list(scope.params) + [ParamValue(n, v, loc) for n, v, loc in action.params]
+        files: list[ParamFileRef] = []
+        for subst, location in action.param_files:
+            written = get(subst, "parameters")
+            if written is not None:
+                files.append(ParamFileRef(self.locate(written), location, written))
+        node = LaunchedNode(package, executable, action.location, scope.file, name, namespace,
+                            remaps, params, files,
+                            conditional=scope.conditional or action.condition is not None,
+                            lifecycle=action.lifecycle, unresolved=unresolved)
+        node.target = self.resolve_target(package, executable)
+        return node
+
+
+def _problem(location: Location, message: str) -> Diagnostic:
+    return Diagnostic(location.path, location.line, message)

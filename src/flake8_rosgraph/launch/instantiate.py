@@ -1,0 +1,188 @@
+"""rcl semantics: a launched node made from its code-level node.
+
+What ``--ros-args`` from launch do when the node starts (rcl ``node.c``,
+``remap.c``, ``arguments.c``):
+
+* ``__node:=`` (the launch ``name``) replaces the node name and ``__ns:=``
+  (the launch namespace, pushed namespaces included) the namespace, for
+  every node the executable creates;
+* every topic/service/action name is expanded with the *new* name and
+  namespace, then the remap rules are tried in order — the scope's
+  ``SetRemap`` rules, then the node's own — on the fully expanded name, and
+  the first match wins; its replacement is expanded in the node's context;
+* parameters reach the node from ``SetParameter`` in scope, the node's inline
+  parameters and every parameter-file section whose node pattern
+  (``/**``, ``*``, ``/ns/name``) matches the node's fully qualified name.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+from ..graph import names
+from ..graph.model import NAMED_KINDS, Diagnostic, Entity, Location, RosGraph, RosNode
+from .model import Instance, LaunchedNode, System
+from .param_files import Section, YamlError, read_param_file
+
+
+def _node_name(launched: LaunchedNode, code: RosNode) -> str | None:
+    if launched.is_unresolved("name"):
+        return None
+    return launched.name if launched.name is not None else code.name
+
+
+def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
+    if launched.is_unresolved("namespace"):
+        return None
+    return launched.namespace if launched.namespace is not None else code.namespace
+
+
+def launch_info(launched: LaunchedNode) -> dict[str, Any]:
+    """The ``"launch"`` object of a node in the graph JSON."""
+    return {"file": launched.launch_file, "line": launched.location.line,
+            "executable": launched.executable, "package": launched.package}
+
+
+class Instantiator:
+    def __init__(self, root: Path) -> None:
+        self.root = Path(root)
+        self._files: dict[str, list[Section] | str] = {}
+
+    def sections(self, path: str) -> list[Section] | str:
+        """A parameter file's sections, or why it cannot be read."""
+        if path not in self._files:
+            try:
+                self._files[path] = read_param_file(self.root, path)
+            except (OSError, UnicodeDecodeError) as exc:
+                self._files[path] = f"cannot read: {exc}"
+            except YamlError as exc:
+                self._files[path] = f"not read: {exc}"
+        return self._files[path]
+
+    def system(self, graph: RosGraph, system: System) -> None:
+        """Bind every launched node of ``system`` whose code is known; fills ``system.instances``."""
+        by_location: dict[Location, list[RosNode]] = {}
+        for node in graph.nodes:
+            by_location.setdefault(node.location, []).append(node)
+        reported: set[tuple[str, int, str]] = set()
+        for launched in system.nodes:
+            for file in launched.param_files:
+                problem = f"parameter file '{file.written}' is not a file in the workspace" \
+                    if file.path is None else self.sections(file.path)
+                if isinstance(problem, str):
+                    key = (file.location.path, file.location.line, problem)
+                    if key not in reported:
+                        reported.add(key)
+                        system.problems.append(Diagnostic(file.location.path, file.location.line, problem))
+            if launched.target.status != "found":
+                continue
+            for site in launched.target.node_sites:
+                for code in by_location.get(site, ()):
+                    system.instances.append(self.instance(launched, code))
+
+    def instance(self, launched: LaunchedNode, code: RosNode) -> Instance:
+        name, namespace = _node_name(launched, code), _namespace(launched, code)
+        rules = [names.RemapRule(r.source, r.target) for r in launched.remaps]
+        hits: set[int] = set()
+        expanded: set[str] = set()
+        entities: list[Entity] = []
+        known = True
+        for entity in code.entities:
+            if entity.kind not in NAMED_KINDS:
+                entities.append(entity)
+                continue
+            resolved, problem, hit = self.resolve(entity, name, namespace, rules)
+            if hit is not None:
+                hits.add(hit)
+            if resolved is not None and name is not None and namespace is not None \
+                    and entity.raw_name is not None:
+                before, _ = names.expand_topic_name(entity.raw_name, name, namespace)
+                expanded.add(before or resolved)
+            known = known and resolved is not None
+            entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid))
+        node = RosNode(name, namespace, code.location, code.cls,
+                       conditional=code.conditional or launched.conditional,
+                       invalid=code.invalid, entities=entities)
+        node.launch = launch_info(launched)
+        return Instance(launched, node, code, frozenset(hits), self.settings(launched, node), known,
+                        tuple(sorted(expanded)))
+
+    @staticmethod
+    def resolve(entity: Entity, name: str | None, namespace: str | None,
+                rules: list[names.RemapRule]) -> tuple[str | None, str | None, int | None]:
+        """The entity's name after expansion and remapping, its problem, and the rule that matched."""
+        raw = entity.raw_name
+        if raw is None:
+            return None, None, None
+        if name is None or namespace is None:
+            return (raw, None, None) if raw.startswith("/") else (None, None, None)
+        expanded, check = names.expand_topic_name(raw, name, namespace)
+        if expanded is None:
+            return entity.name, check.reason, None
+        rule = names.first_remap_match(expanded, rules, name, namespace)
+        if rule is None:
+            return expanded, None if check.ok else check.reason, None
+        remapped, check = names.expand_topic_name(rule.replacement, name, namespace)
+        if remapped is None:
+            return rule.replacement, check.reason, rules.index(rule)
+        return remapped, None if check.ok else check.reason, rules.index(rule)
+
+    def settings(self, launched: LaunchedNode, node: RosNode) -> list[tuple[str, Any, Location, str]]:
+        out = [(p.name, p.value, p.location, "scope" if p.from_scope else "inline")
+               for p in launched.params]
+        fqn = node.fqn
+        for file in launched.param_files:
+            sections = self.sections(file.path) if file.path is not None else "unresolved"
+            if isinstance(sections, str) or fqn is None:
+                continue
+            for section in sections:
+                if section.matches(fqn):
+                    out.extend((n, v, loc, "file") for n, v, loc in section.settings)
+        return out
+
+
+def instantiate(root: Path, graph: RosGraph, systems: list[System]) -> None:
+    """Fill ``instances`` of every system against the code-level ``graph``."""
+    binder = Instantiator(root)
+    for system in systems:
+        binder.system(graph, system)
+
+
+def _placeholder(launched: LaunchedNode) -> RosNode:
+    """A launched node whose code the analysis cannot see (C++, not in the workspace): no entities."""
+    node = RosNode(launched.name, launched.namespace, launched.location, None,
+                   conditional=launched.conditional)
+    node.launch = launch_info(launched)
+    return node
+
+
+def _node_key(node: RosNode) -> tuple:
+    return (node.fqn or "", node.location, repr(node.launch),
+            tuple((e.kind, e.name or "", e.location) for e in node.entities))
+
+
+def apply_systems(graph: RosGraph, systems: list[System], placeholders: bool) -> RosGraph:
+    """The code graph with every node the systems start replaced by its launched instances.
+
+    Code nodes no system starts stay as written.  ``placeholders`` adds the
+    launched nodes whose code is not analysed (for printing a system; the
+    rules leave them out, since an entity-less node only adds unknowns).
+    """
+    started = {id(i.code) for s in systems for i in s.instances}
+    nodes: dict[tuple, RosNode] = {}
+    for node in graph.nodes:
+        if id(node) not in started:
+            nodes.setdefault(_node_key(node), node)
+    for system in systems:
+        for instance in system.instances:
+            nodes.setdefault(_node_key(instance.node), instance.node)
+        if placeholders:
+            for launched in system.nodes:
+                if launched.target.status != "found":
+                    node = _placeholder(launched)
+                    nodes.setdefault(_node_key(node), node)
+    out = RosGraph(sorted(nodes.values(), key=lambda n: (n.fqn or "", n.location, _node_key(n))),
+                   list(graph.diagnostics))
+    out.diagnostics = sorted(set(out.diagnostics) | {d for s in systems for d in s.problems})
+    return out

@@ -1,0 +1,140 @@
+"""The launch-time view of a workspace: what a launch file starts, and how.
+
+Three front ends (Python, XML, YAML) read launch files into the same plain
+records, so that instantiation (:mod:`.instantiate`) and the ROS2xx rules do
+not care which syntax a file used.  A value a front end cannot pin down is
+``None`` plus an entry in :attr:`LaunchedNode.unresolved` saying why — never a
+guess, because a guessed namespace would invent connections.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..graph.model import Diagnostic, Location, RosNode
+
+
+@dataclass(frozen=True, order=True)
+class Remap:
+    """One ``from:=to`` rule as the launch file wrote it (substitutions resolved)."""
+
+    source: str
+    target: str
+    location: Location
+    #: Set by a ``SetRemap`` of the scope (for every node there), not by this node.
+    from_scope: bool = False
+
+
+@dataclass(frozen=True, order=True)
+class ParamValue:
+    """A parameter set inline (``parameters=[{...}]``, ``<param name= value=>``, ``SetParameter``)."""
+
+    name: str
+    value: Any
+    location: Location
+    #: Set by a ``SetParameter`` of the scope (meant for every node there), not for this node.
+    from_scope: bool = False
+
+
+@dataclass(frozen=True, order=True)
+class ParamFileRef:
+    """A parameter YAML file handed to a node; ``path`` is root-relative, ``None`` when unresolved."""
+
+    path: str | None
+    location: Location
+    written: str = ""  # the reference as the launch file wrote it, for messages
+
+
+@dataclass(frozen=True)
+class ExecutableRef:
+    """Where ``package`` + ``executable`` lead in the workspace.
+
+    ``status`` is ``"found"`` (code nodes known), ``"no-python"`` (a real
+    executable the analyser cannot look into: C++, a script it cannot map),
+    ``"missing-package"`` (the package is not in the workspace: an installed
+    one, not judged), ``"missing-executable"`` (the package is in the
+    workspace and has no such executable: ROS201) or ``"unknown"`` (the
+    package or executable name is not known statically).
+    """
+
+    status: str
+    #: Locations of the code-level nodes the executable creates (keys into the code graph).
+    node_sites: tuple[Location, ...] = ()
+    #: Node sites whose code allows undeclared parameters (any override is accepted).
+    open_parameter_sites: tuple[Location, ...] = ()
+    #: ``module:function`` the executable runs, for the JSON output.
+    entry: str | None = None
+    #: The executables the package does have, for the ROS201 message.
+    known: tuple[str, ...] = ()
+
+
+@dataclass
+class LaunchedNode:
+    """One ``Node``/``LifecycleNode`` action, with everything its scope adds.
+
+    ``name`` and ``namespace`` are the launch overrides (``__node``/``__ns``);
+    ``None`` means "not overridden" unless the field is listed in
+    ``unresolved``, in which case the launch file sets it to something
+    the analysis cannot determine.  ``remaps`` are in rcl's order: the
+    scope's ``SetRemap`` rules first, then the node's own.  ``params`` and
+    ``param_files`` are in the order launch passes them (global first).
+    """
+
+    package: str | None
+    executable: str | None
+    location: Location
+    launch_file: str
+    name: str | None = None
+    namespace: str | None = None
+    remaps: list[Remap] = field(default_factory=list)
+    params: list[ParamValue] = field(default_factory=list)
+    param_files: list[ParamFileRef] = field(default_factory=list)
+    conditional: bool = False
+    lifecycle: bool = False
+    unresolved: list[str] = field(default_factory=list)
+    target: ExecutableRef = ExecutableRef("unknown")
+
+    def is_unresolved(self, what: str) -> bool:
+        return any(u.split(":", 1)[0] == what for u in self.unresolved)
+
+
+@dataclass
+class Instance:
+    """A launched node bound to a code-level node: the node as rcl would create it.
+
+    ``settings`` are the parameters that reach the node (``(name, value,
+    location, origin)``, origin ``"scope"``, ``"inline"`` or ``"file"``);
+    ``remap_hits`` the indexes of ``launched.remaps`` that matched a name.
+    """
+
+    launched: LaunchedNode
+    node: RosNode
+    code: RosNode
+    remap_hits: frozenset[int] = frozenset()
+    settings: list[tuple[str, Any, Location, str]] = field(default_factory=list)
+    #: Every named entity of the node has a known name, so "matches nothing" is a fact.
+    names_known: bool = True
+    #: The node's names expanded in its launched name and namespace, before remapping.
+    expanded: tuple[str, ...] = ()
+
+
+@dataclass
+class System:
+    """Everything one launch file (and what it includes) starts.
+
+    ``files`` lists the launch files read, the root file first; ``problems``
+    are the parts that could not be followed (an include that does not
+    resolve, an ``OpaqueFunction``): reported, not guessed.
+    """
+
+    launch_file: str
+    nodes: list[LaunchedNode] = field(default_factory=list)
+    files: list[str] = field(default_factory=list)
+    arguments: dict[str, str | None] = field(default_factory=dict)
+    problems: list[Diagnostic] = field(default_factory=list)
+    instances: list[Instance] = field(default_factory=list)
+
+    @property
+    def complete(self) -> bool:
+        """Whether every node was instantiated with every value known."""
+        return not self.problems and all(not n.unresolved for n in self.nodes)

@@ -1,0 +1,294 @@
+"""ROS packages of a workspace and the executables they install, read statically.
+
+A package is a folder with a ``package.xml``.  ``ros2 run pkg exe`` (and a
+launch file's ``Node(package=…, executable=…)``) finds ``exe`` among
+
+* ``console_scripts`` entry points of an ``ament_python`` package, in
+  ``setup.cfg`` or in ``setup.py`` — the latter read with :mod:`ast` and a
+  small constant folder (``package_name + '.talker:main'``, f-strings), never
+  executed;
+* ``add_executable(...)`` targets and ``install(PROGRAMS ... DESTINATION
+  lib/${PROJECT_NAME})`` scripts of an ``ament_cmake`` package.
+
+When a package's list cannot be read completely (an entry point built at run
+time, a CMake variable in a target name), :attr:`Package.complete` is false and
+ROS201 stays quiet for it: an unknown list must not yield "no such executable".
+"""
+from __future__ import annotations
+
+import ast
+import configparser
+import os
+import re
+import xml.parsers.expat
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..graph.model import Diagnostic
+from ..workspace import SKIP_DIRS
+
+
+@dataclass(frozen=True)
+class Executable:
+    """One installed executable: a Python entry point (``module:function``) or a script/binary."""
+
+    name: str
+    module: str | None = None     # dotted module for console_scripts / root-relative path for scripts
+    function: str | None = None
+    script: str | None = None     # root-relative path of an installed Python script
+    language: str = "python"      # "python" | "cpp"
+
+
+@dataclass
+class Package:
+    name: str
+    path: str                     # root-relative folder ("." for a package at the root)
+    build_type: str
+    executables: dict[str, Executable] = field(default_factory=dict)
+    complete: bool = True
+
+
+@dataclass
+class PackageIndex:
+    packages: dict[str, Package] = field(default_factory=dict)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def folder(self, root: Path, name: str) -> Path | None:
+        package = self.packages.get(name)
+        return None if package is None else root / package.path
+
+
+def _rel(path: Path, root: Path) -> str:
+    rel = path.relative_to(root).as_posix()
+    return rel or "."
+
+
+def package_xml_files(root: Path) -> list[Path]:
+    found: list[Path] = []
+    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        if "package.xml" in filenames:
+            found.append(Path(dirpath) / "package.xml")
+        if "COLCON_IGNORE" in filenames or "AMENT_IGNORE" in filenames:
+            dirnames[:] = []
+    return sorted(found)
+
+
+def _xml_texts(text: str) -> dict[str, str]:
+    """``name`` and ``build_type`` of a package.xml (first occurrence of each)."""
+    out: dict[str, str] = {}
+    stack: list[str] = []
+    parser = xml.parsers.expat.ParserCreate()
+
+    def start(tag: str, attrs: dict) -> None:
+        stack.append(tag)
+
+    def end(tag: str) -> None:
+        stack.pop()
+
+    def data(chunk: str) -> None:
+        if stack and stack[-1] in ("name", "build_type") and len(stack) <= 3:
+            key = stack[-1]
+            if key == "name" and len(stack) != 2:
+                return
+            out[key] = out.get(key, "") + chunk
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.CharacterDataHandler = data
+    parser.Parse(text, True)
+    return {k: v.strip() for k, v in out.items()}
+
+
+def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
+    rel = _rel(xml_path, root)
+    try:
+        fields = _xml_texts(xml_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, xml.parsers.expat.ExpatError) as exc:
+        return Diagnostic(rel, 1, f"cannot read package.xml: {exc}")
+    if not fields.get("name"):
+        return Diagnostic(rel, 1, "package.xml has no <name>")
+    folder = xml_path.parent
+    build_type = fields.get("build_type") or (
+        "ament_python" if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file()
+        else "ament_cmake")
+    package = Package(fields["name"], _rel(folder, root), build_type)
+    scripts = _console_scripts(folder, package.name)
+    if scripts is None:
+        package.complete = False
+    else:
+        for exe in scripts:
+            package.executables.setdefault(exe.name, exe)
+    cmake = folder / "CMakeLists.txt"
+    if cmake.is_file():
+        if not _cmake_executables(cmake, folder, root, package):
+            package.complete = False
+    return package
+
+
+# -- setup.cfg / setup.py -----------------------------------------------------------------------
+def _entry(spec: str) -> Executable | None:
+    name, sep, target = spec.partition("=")
+    module, _, function = target.strip().partition(":")
+    if not sep or not name.strip() or not module:
+        return None
+    return Executable(name.strip(), module.strip(), function.strip().split()[0] if function.strip() else None)
+
+
+def _console_scripts(folder: Path, package_name: str) -> list[Executable] | None:
+    """Entry points from setup.cfg and setup.py; ``None`` when setup.py hides them from static reading."""
+    out: list[Executable] = []
+    cfg = folder / "setup.cfg"
+    if cfg.is_file():
+        parser = configparser.ConfigParser(interpolation=None)
+        try:
+            parser.read_string(cfg.read_text(encoding="utf-8"))
+            raw = parser.get("options.entry_points", "console_scripts", fallback="")
+        except (configparser.Error, OSError, UnicodeDecodeError):
+            return None
+        out.extend(e for e in map(_entry, raw.splitlines()) if e is not None)
+    setup = folder / "setup.py"
+    if setup.is_file():
+        found = _setup_py_scripts(setup)
+        if found is None:
+            return None
+        out.extend(found)
+    return out
+
+
+class _Folder(ast.NodeVisitor):
+    """Module-level constant assignments, so ``package_name + '.x:main'`` folds."""
+
+    def __init__(self) -> None:
+        self.names: dict[str, object] = {}
+
+    def value(self, node: ast.expr) -> object:
+        if isinstance(node, ast.Constant):
+            return node.value
+        if isinstance(node, ast.Name) and node.id in self.names:
+            return self.names[node.id]
+        if isinstance(node, (ast.List, ast.Tuple)):
+            return [self.value(e) for e in node.elts]
+        if isinstance(node, ast.Dict):
+            return {self.value(k) if k is not None else None: self.value(v)
+                    for k, v in zip(node.keys, node.values)}
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            left, right = self.value(node.left), self.value(node.right)
+            if isinstance(left, str) and isinstance(right, str):
+                return left + right
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod):
+            left, right = self.value(node.left), self.value(node.right)
+            if isinstance(left, str):
+                try:
+                    return left % (tuple(right) if isinstance(right, list) else right)
+                except (TypeError, ValueError):
+                    return _UNKNOWN
+        if isinstance(node, ast.JoinedStr):
+            parts = []
+            for part in node.values:
+                if isinstance(part, ast.Constant):
+                    parts.append(str(part.value))
+                elif isinstance(part, ast.FormattedValue) and not part.format_spec:
+                    inner = self.value(part.value)
+                    if not isinstance(inner, (str, int)):
+                        return _UNKNOWN
+                    parts.append(str(inner))
+                else:
+                    return _UNKNOWN
+            return "".join(parts)
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                and node.func.attr == "format" and not node.keywords:
+            template = self.value(node.func.value)
+            args = [self.value(a) for a in node.args]
+            if isinstance(template, str) and all(isinstance(a, (str, int)) for a in args):
+                try:
+                    return template.format(*args)
+                except (IndexError, KeyError, ValueError):
+                    return _UNKNOWN
+        return _UNKNOWN
+
+
+_UNKNOWN = object()
+
+
+def _setup_py_scripts(path: Path) -> list[Executable] | None:
+    try:
+        tree = ast.parse(path.read_bytes(), filename=str(path))
+    except (SyntaxError, ValueError, OSError):
+        return None
+    folder = _Folder()
+    for stmt in tree.body:
+        if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
+                and isinstance(stmt.targets[0], ast.Name):
+            folder.names[stmt.targets[0].id] = folder.value(stmt.value)
+    for call in ast.walk(tree):
+        if not isinstance(call, ast.Call):
+            continue
+        func = call.func
+        name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else ""
+        if name != "setup":
+            continue
+        for keyword in call.keywords:
+            if keyword.arg is None:
+                return None  # setup(**config): the entry points are not visible
+            if keyword.arg != "entry_points":
+                continue
+            points = folder.value(keyword.value)
+            if not isinstance(points, dict):
+                return None
+            scripts = points.get("console_scripts", [])
+            if not isinstance(scripts, list) or not all(isinstance(s, str) for s in scripts):
+                return None
+            return [e for e in map(_entry, scripts) if e is not None]
+        return []
+    return []
+
+
+# -- CMakeLists.txt ---------------------------------------------------------------------------
+_ADD_EXECUTABLE = re.compile(r"\badd_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
+_INSTALL_PROGRAMS = re.compile(
+    r"\binstall\s*\(\s*PROGRAMS\s+([^)]*?)\s+DESTINATION\s+lib/\$\{PROJECT_NAME\}", re.IGNORECASE)
+_CMAKE_COMMENT = re.compile(r"#[^\n]*")
+
+
+def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package) -> bool:
+    """Add the CMake targets and installed scripts; false when a name is not literal."""
+    try:
+        text = _CMAKE_COMMENT.sub("", cmake.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError):
+        return False
+    complete = True
+    for match in _ADD_EXECUTABLE.finditer(text):
+        name = match.group(1)
+        if "$" in name:
+            complete = False
+            continue
+        package.executables.setdefault(name, Executable(name, language="cpp"))
+    for match in _INSTALL_PROGRAMS.finditer(text):
+        for item in match.group(1).split():
+            if "$" in item:
+                complete = False
+                continue
+            script = folder / item
+            package.executables.setdefault(Path(item).name, Executable(
+                Path(item).name, script=_rel(script, root) if script.is_file() else None))
+    return complete
+
+
+def find_packages(root: Path) -> PackageIndex:
+    """Every package under ``root`` (a duplicate name: the first in path order wins, with a diagnostic)."""
+    index = PackageIndex()
+    root = Path(root)
+    if not root.is_dir():
+        return index
+    for xml_path in package_xml_files(root):
+        result = read_package(xml_path, root)
+        if isinstance(result, Diagnostic):
+            index.diagnostics.append(result)
+        elif result.name in index.packages:
+            index.diagnostics.append(Diagnostic(
+                _rel(xml_path, root), 1,
+                f"package '{result.name}' is also at {index.packages[result.name].path}; ignored"))
+        else:
+            index.packages[result.name] = result
+    return index

@@ -1,0 +1,326 @@
+"""Python launch files → :mod:`.actions`, from the abstract interpreter's results.
+
+A ``*.launch.py`` file is analysed like any other module (it imports
+``launch``/``launch_ros``, whose stubs make it relevant); its
+``generate_launch_description()`` is an entry function, and its return
+summary is the ``LaunchDescription`` object.  The stubs make every action an
+object whose constructor stores its arguments on the object (so the action
+keeps its call site, ``path:line:col``) and every substitution a record; this
+module reads that heap back into the neutral action tree.  Nothing is
+executed: values the analysis could not pin down become
+:class:`~.actions.Unknown` with a reason.
+"""
+from __future__ import annotations
+
+from typing import Any, Iterable
+
+from ..absint.engine import Analysis
+from ..absint.values import (BOTTOM, Coll, Const, DictAtom, Extern, Obj, Record, Seq, Value,
+                             join_all)
+from ..graph.model import Location
+from .actions import (Action, Condition, DeclareArgument, GroupAction, Include, Join, NodeAction,
+                      PkgShare, PushNamespace, SetConfiguration, SetParameter, SetRemap, Subst, Text,
+                      ThisDir, Unknown, Unsupported, Var)
+
+ENTRY_FUNCTION = "generate_launch_description"
+
+_LD = "launch.launch_description.LaunchDescription"
+_NODE = "launch_ros.actions.node.Node"
+_LIFECYCLE = "launch_ros.actions.lifecycle_node.LifecycleNode"
+_SOURCES = {
+    "launch.launch_description_sources.python_launch_description_source.PythonLaunchDescriptionSource",
+    "launch.launch_description_sources.any_launch_description_source.AnyLaunchDescriptionSource",
+    "launch.launch_description_sources.frontend_launch_description_source.FrontendLaunchDescriptionSource",
+}
+_PKG_SHARE = {"launch_ros.substitutions.find_package.FindPackageShare",
+              "ament_index_python.packages.get_package_share_directory"}
+#: Actions that start nothing and change no scope: skipped silently.
+_INERT = {"launch.actions.log_info.LogInfo",
+          "launch.actions.set_environment_variable.SetEnvironmentVariable"}
+
+
+def _site_location(site: str) -> Location:
+    """``path:line:col`` (``@context`` appended inside functions) → a 1-based location."""
+    path, line, column = site.split("@", 1)[0].rsplit(":", 2)
+    return Location(path, int(line), int(column) + 1)
+
+
+def launch_description(analysis: Analysis, path: str) -> Value | None:
+    """The joined return summary of ``generate_launch_description`` in the module at ``path``."""
+    fids = [f.fid for f in analysis.program.functions
+            if f.module.path == path and f.parent is None and f.cls is None
+            and f.qualname == ENTRY_FUNCTION]
+    if not fids:
+        return None
+    return join_all(analysis.heap.get(("ret", task), BOTTOM) for task in analysis.effects
+                    if task[0] == "fn" and task[1] in fids)
+
+
+def _order(atom: Any) -> tuple:
+    return (atom.site if isinstance(atom, Obj) else "", repr(atom))
+
+
+class PythonFront:
+    def __init__(self, analysis: Analysis, path: str) -> None:
+        self.analysis = analysis
+        self.path = path
+
+    def kind(self, atom: Any) -> str:
+        if isinstance(atom, Obj) and isinstance(atom.cls, Extern):
+            return self.analysis.library.canonical(atom.cls.qualname)
+        if isinstance(atom, Record):
+            return self.analysis.library.canonical(atom.qualname)
+        return ""
+
+    def field(self, obj: Obj, key: str) -> Value:
+        return self.analysis.heap.get(("a", obj.site, key), BOTTOM)
+
+    # -- entry --------------------------------------------------------------------------------
+    def actions(self) -> tuple[list[Action], str | None]:
+        """The description's actions, or an empty list and why there are none."""
+        summary = launch_description(self.analysis, self.path)
+        if summary is None:
+            return [], f"no {ENTRY_FUNCTION}() function"
+        descriptions = [a for a in summary if self.kind(a) == _LD]
+        if summary.is_top or not descriptions:
+            return [], f"{ENTRY_FUNCTION}() does not return a LaunchDescription the analysis can follow"
+        out: list[Action] = []
+        for ld in sorted(descriptions, key=_order):
+            out.extend(self.entity_list(self.field(ld, "initial_entities"), _site_location(ld.site)))
+            out.extend(self.entity_list(self.field(ld, "added_entities"), _site_location(ld.site)))
+        return out, None
+
+    def entity_list(self, value: Value, at: Location) -> list[Action]:
+        if value.is_top:
+            return [Unsupported(at, "a list of launch entities the analysis cannot determine")]
+        out: list[Action] = []
+        for atom in sorted(value, key=_order):
+            if isinstance(atom, Seq):
+                for item in atom.items:
+                    out.extend(self.entity_list(item, at))
+            elif isinstance(atom, Coll):
+                out.extend(self.entity_list(atom.elem, at))
+            elif isinstance(atom, Obj):
+                out.extend(self.action(atom))
+            elif atom != Const.of(None):
+                out.append(Unsupported(at, "a launch entity the analysis cannot determine"))
+        return out
+
+    # -- actions -------------------------------------------------------------------------------
+    def action(self, obj: Obj) -> list[Action]:
+        kind = self.kind(obj)
+        at = _site_location(obj.site)
+        short = kind.rsplit(".", 1)[-1]
+        if kind in (_NODE, _LIFECYCLE):
+            return [self.node(obj, at, kind == _LIFECYCLE)]
+        if short == "GroupAction":
+            scoped = self.field(obj, "scoped").consts() != [False]
+            return [GroupAction(at, self.entity_list(self.field(obj, "actions"), at), scoped,
+                                self.condition(obj))]
+        if short == "TimerAction":
+            return [GroupAction(at, self.entity_list(self.field(obj, "actions"), at), False,
+                                self.condition(obj))]
+        if short == "PushRosNamespace":
+            return [PushNamespace(at, self.subst(self.field(obj, "namespace")))]
+        if short == "SetRemap":
+            return [SetRemap(at, self.subst(self.field(obj, "src")), self.subst(self.field(obj, "dst")))]
+        if short == "SetParameter":
+            name = self.field(obj, "name").strings()
+            return [SetParameter(at, name[0], self.param_value(self.field(obj, "value")))
+                    if name and len(name) == 1 else Unsupported(at, "SetParameter with an unknown name")]
+        if short in ("DeclareLaunchArgument", "SetLaunchConfiguration"):
+            names = self.field(obj, "name").strings()
+            if not names or len(names) != 1:
+                return [Unsupported(at, f"{short} with an unknown name")]
+            if short == "SetLaunchConfiguration":
+                return [SetConfiguration(at, names[0], self.subst(self.field(obj, "value")))]
+            default = self.field(obj, "default_value")
+            return [DeclareArgument(at, names[0], None if default.consts() == [None] else self.subst(default))]
+        if short == "IncludeLaunchDescription":
+            return [Include(at, self.source(self.field(obj, "launch_description_source")),
+                            self.arguments(self.field(obj, "launch_arguments")), self.condition(obj))]
+        if kind in _INERT:
+            return []
+        return [Unsupported(at, short or "an unknown launch entity")]
+
+    def node(self, obj: Obj, at: Location, lifecycle: bool) -> NodeAction:
+        def pick(*keys: str) -> Subst | None:
+            for key in keys:
+                value = self.field(obj, key)
+                if value.consts() != [None] and not value.is_bottom:
+                    return self.subst(value)
+            return None
+
+        node = NodeAction(at, pick("package"), pick("executable", "node_executable"),
+                          pick("name", "node_name"), pick("namespace", "node_namespace"),
+                          condition=self.condition(obj), lifecycle=lifecycle)
+        remaps = self.field(obj, "remappings")
+        for pair in self.items(remaps, "remappings", node):
+            if isinstance(pair, Seq) and len(pair.items) == 2:
+                node.remaps.append((self.subst(pair.items[0]), self.subst(pair.items[1]), at))
+            else:
+                node.unresolved.append("remappings: an entry is not a (from, to) pair")
+        for entry in self.items(self.field(obj, "parameters"), "parameters", node):
+            if isinstance(entry, DictAtom):
+                self.inline_params(entry, "", node, at)
+            elif isinstance(entry, Record) and self.kind(entry).endswith("ParameterFile"):
+                node.param_files.append((self.subst(entry.field("param_file") or BOTTOM), at))
+            else:
+                node.param_files.append((self.subst(Value(frozenset([entry]))), at))
+        if self.ros_arguments(self.field(obj, "ros_arguments"), self.field(obj, "arguments")):
+            node.unresolved.append("ros_arguments: --ros-args given on the command line are not interpreted")
+        return node
+
+    @staticmethod
+    def ros_arguments(ros_arguments: Value, arguments: Value) -> bool:
+        """Whether the node gets ``--ros-args`` rules (remaps, parameters) the walker does not read.
+
+        Plain ``arguments`` (``['-d', rviz_config]``) are the program's own and change nothing in
+        the graph; only ``ros_arguments`` and a literal ``--ros-args`` in ``arguments`` do.
+        """
+        if not ros_arguments.is_bottom and ros_arguments.consts() != [None]:
+            return True
+        for atom in arguments:
+            if isinstance(atom, Seq) and any("--ros-args" in (item.strings() or ()) for item in atom.items):
+                return True
+        return False
+
+    def items(self, value: Value, what: str, node: NodeAction) -> Iterable[Any]:
+        """Elements of a list argument; unknown parts go to ``node.unresolved``."""
+        if value.is_bottom or value.consts() == [None]:
+            return []
+        if value.is_top:
+            node.unresolved.append(f"{what}: not known statically")
+            return []
+        out: list[Any] = []
+        for atom in sorted(value, key=_order):
+            if isinstance(atom, Seq):
+                for item in atom.items:
+                    if item.is_top or len(list(item)) != 1:
+                        node.unresolved.append(f"{what}: an entry is not known statically")
+                    else:
+                        out.extend(item)
+            elif isinstance(atom, Coll):
+                node.unresolved.append(f"{what}: a list built at run time")
+            else:
+                node.unresolved.append(f"{what}: not a list")
+        return out
+
+    def inline_params(self, entry: DictAtom, prefix: str, node: NodeAction, at: Location) -> None:
+        for key, value in entry.items:
+            names = key.strings()
+            if not names or len(names) != 1:
+                node.unresolved.append("parameters: a name is not known statically")
+                continue
+            name = prefix + names[0]
+            nested = [a for a in value if isinstance(a, DictAtom)]
+            if nested and len(list(value)) == 1:
+                self.inline_params(nested[0], name + ".", node, at)
+            else:
+                node.params.append((name, self.param_value(value), at))
+
+    def param_value(self, value: Value) -> Any:
+        consts = value.consts()
+        if consts is not None and len(consts) == 1:
+            return consts[0]
+        return None
+
+    # -- substitutions -------------------------------------------------------------------------
+    def subst(self, value: Value) -> Subst:
+        atoms_ = list(value)
+        if value.is_top or not atoms_:
+            return Unknown("a value the analysis cannot determine")
+        if len(atoms_) > 1:
+            return Unknown("a value with several possible values")
+        atom = atoms_[0]
+        if isinstance(atom, Const):
+            if isinstance(atom.value, bool):
+                return Text("true" if atom.value else "false")
+            if isinstance(atom.value, (str, int, float)):
+                return Text(str(atom.value))
+            return Unknown(f"the constant {atom.value!r}")
+        if isinstance(atom, Seq):
+            return Join(tuple(self.subst(v) for v in atom.items))
+        if isinstance(atom, Record):
+            return self.record_subst(atom)
+        return Unknown("a value that is not a string or substitution")
+
+    def record_subst(self, record: Record) -> Subst:
+        kind = self.kind(record)
+        short = kind.rsplit(".", 1)[-1]
+        if short == "LaunchConfiguration":
+            names = (record.field("variable_name") or BOTTOM).strings()
+            if not names or len(names) != 1:
+                return Unknown("LaunchConfiguration with an unknown name")
+            default = record.field("default")
+            has_default = default is not None and default.consts() != [None]
+            return Var(names[0], self.subst(default) if has_default and default is not None else None)
+        if short == "TextSubstitution":
+            return self.subst(record.field("text") or BOTTOM)
+        if short == "PathJoinSubstitution":
+            parts = record.field("substitutions") or BOTTOM
+            joined = self.subst(parts)
+            return Join(joined.parts, "/") if isinstance(joined, Join) else joined
+        if kind == "os.path.join":
+            parts = self.subst(record.field("paths") or BOTTOM)
+            return Join(parts.parts, "/") if isinstance(parts, Join) else parts
+        if short == "ThisLaunchFileDir":
+            return ThisDir()
+        if kind in _PKG_SHARE:
+            return PkgShare(self.subst(record.field("package") or BOTTOM))
+        return Unknown(f"{short} is not evaluated statically")
+
+    def condition(self, obj: Obj) -> Condition | None:
+        value = self.field(obj, "condition")
+        if value.is_bottom or value.consts() == [None]:
+            return None
+        for atom in value:
+            if isinstance(atom, Record):
+                short = self.kind(atom).rsplit(".", 1)[-1]
+                if short in ("IfCondition", "UnlessCondition"):
+                    return Condition(self.subst(atom.field("predicate_expression") or BOTTOM),
+                                     negate=short == "UnlessCondition")
+        return Condition(Unknown("a condition the analysis does not evaluate"))
+
+    def source(self, value: Value) -> Subst:
+        for atom in value:
+            if isinstance(atom, Record) and self.kind(atom) in _SOURCES:
+                return self.subst(atom.field("launch_file_path") or BOTTOM)
+        return self.subst(value)
+
+    def arguments(self, value: Value) -> list[tuple[str, Subst]] | None:
+        if value.is_bottom or value.consts() == [None]:
+            return []
+        atoms_ = list(value)
+        if value.is_top or len(atoms_) != 1:
+            return None
+        atom = atoms_[0]
+        pairs: list[tuple[Value, Value]] = []
+        if isinstance(atom, DictAtom):
+            pairs = list(atom.items)
+        elif isinstance(atom, Seq):
+            for item in atom.items:
+                inner = list(item)
+                if len(inner) != 1 or not isinstance(inner[0], Seq) or len(inner[0].items) != 2:
+                    return None
+                pairs.append((inner[0].items[0], inner[0].items[1]))
+        elif isinstance(atom, Coll):
+            # dict(...).items(): keys and values are joined; only a single pair stays readable.
+            inner = list(atom.elem)
+            if len(inner) != 1 or not isinstance(inner[0], Seq) or len(inner[0].items) != 2:
+                return None
+            pairs = [(inner[0].items[0], inner[0].items[1])]
+        else:
+            return None
+        out: list[tuple[str, Subst]] = []
+        for key, val in pairs:
+            names = key.strings()
+            if not names or len(names) != 1:
+                return None
+            out.append((names[0], self.subst(val)))
+        return out
+
+
+def read_python_launch(analysis: Analysis, path: str) -> tuple[list[Action], str | None]:
+    """The actions of the Python launch file at ``path`` (root-relative), or why there are none."""
+    return PythonFront(analysis, path).actions()

@@ -1,0 +1,90 @@
+"""``package`` + ``executable`` → the code-level nodes that executable creates.
+
+An entry point ``module:function`` (or an installed script's module top
+level) starts a task of the analysis; the nodes it creates are the ``node``
+effects of every task reachable from there.  Calls are read off the engine's
+dependency record: a task that read the return summary ``("ret", t)`` called
+``t``, and one that read a module global ``("g", m, …)`` imported ``m``
+(whose top level ran).
+"""
+from __future__ import annotations
+
+from collections import deque
+
+from ..absint.engine import Analysis
+from ..graph.model import Location
+from .model import ExecutableRef
+from .packages import Executable, PackageIndex
+
+
+class TargetIndex:
+    def __init__(self, analysis: Analysis | None, packages: PackageIndex) -> None:
+        self.analysis = analysis
+        self.packages = packages
+        self.callees: dict[tuple, set[tuple]] = {}
+        if analysis is not None:
+            for key, readers in analysis.readers.items():
+                callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
+                if callee is None:
+                    continue
+                for caller in readers:
+                    self.callees.setdefault(caller, set()).add(callee)
+
+    def resolve(self, package: str | None, executable: str | None) -> ExecutableRef:
+        if package is None or executable is None:
+            return ExecutableRef("unknown")
+        found = self.packages.packages.get(package)
+        if found is None:
+            return ExecutableRef("missing-package")
+        exe = found.executables.get(executable)
+        if exe is None:
+            status = "missing-executable" if found.complete else "unknown"
+            return ExecutableRef(status, known=tuple(sorted(found.executables)))
+        if exe.language != "python" or self.analysis is None:
+            return ExecutableRef("no-python")
+        return self.python_target(exe)
+
+    def python_target(self, exe: Executable) -> ExecutableRef:
+        program = self.analysis.program
+        if exe.module is not None:
+            modules = [program.modules[exe.module]] if exe.module in program.modules else []
+            entry = f"{exe.module}:{exe.function}" if exe.function else exe.module
+        else:
+            modules = [m for m in program.modules.values() if m.path == exe.script]
+            entry = exe.script
+        if not modules:
+            return ExecutableRef("no-python", entry=entry)
+        module = modules[0]
+        starts: list[tuple] = [("mod", module.name, ())]
+        fids = {f.fid for f in program.functions
+                if f.module is module and f.parent is None and f.cls is None
+                and f.qualname == exe.function}
+        starts.extend(t for t in self.analysis.effects if t[0] == "fn" and t[1] in fids)
+        sites, open_sites = self.node_sites(starts)
+        if not sites:
+            return ExecutableRef("no-python", entry=entry)
+        return ExecutableRef("found", tuple(sites), tuple(open_sites), entry=entry)
+
+    def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location]]:
+        seen = set(starts)
+        queue = deque(starts)
+        sites: set[Location] = set()
+        open_sites: set[Location] = set()
+        while queue:
+            task = queue.popleft()
+            for eff in self.analysis.effects.get(task, {}).values():
+                if eff.kind != "node":
+                    continue
+                site = Location(eff.path, eff.line, eff.column)
+                sites.add(site)
+                args = dict(eff.args)
+                if args.get("allow_undeclared") is not None and \
+                        args["allow_undeclared"].consts() != [False]:
+                    open_sites.add(site)
+                if "auto_declare" in args and args["auto_declare"].consts() != [False]:
+                    open_sites.add(site)
+            for callee in sorted(self.callees.get(task, ()), key=repr):
+                if callee not in seen:
+                    seen.add(callee)
+                    queue.append(callee)
+        return sorted(sites), sorted(open_sites)

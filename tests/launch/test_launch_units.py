@@ -1,0 +1,113 @@
+"""Unit tests: package index, YAML reader, $(…) substitutions, parameter-file sections, namespaces."""
+from __future__ import annotations
+
+import pytest
+
+from flake8_rosgraph.launch.actions import Join, PkgShare, Text, ThisDir, Unknown, Var
+from flake8_rosgraph.launch.execute import prefix_namespace
+from flake8_rosgraph.launch.frontend_subst import parse_substitutions
+from flake8_rosgraph.launch.packages import find_packages
+from flake8_rosgraph.launch.param_files import read_param_file
+from flake8_rosgraph.launch.yaml_reader import YamlError, read_yaml
+
+
+def test_packages_and_executables_are_read_statically(ws):
+    index = find_packages(ws.root)
+    assert sorted(index.packages) == ["demo_bringup", "demo_cpp", "demo_py"]
+    demo = index.packages["demo_py"]
+    assert (demo.path, demo.build_type, demo.complete) == ("src/demo_py", "ament_python", True)
+    assert {n: (e.module, e.function) for n, e in demo.executables.items()} == {
+        "talker": ("demo_py.talker", "main"),      # package_name + '.talker:main'
+        "listener": ("demo_py.listener", "main"),  # f-string
+        "monitor": ("demo_py.monitor", "main"),
+    }
+    cpp = index.packages["demo_cpp"]
+    assert (cpp.build_type, sorted(cpp.executables), cpp.executables["relay"].language) == \
+        ("ament_cmake", ["relay"], "cpp")
+
+
+def test_setup_py_hiding_entry_points_makes_the_package_incomplete(tmp_path):
+    pkg = tmp_path / "hidden"
+    pkg.mkdir()
+    (pkg / "package.xml").write_text("<package><name>hidden</name></package>")
+    (pkg / "setup.py").write_text("from setuptools import setup\nsetup(**load_config())\n")
+    (pkg / "setup.cfg").write_text("[options.entry_points]\nconsole_scripts =\n    a = hidden.a:main\n")
+    package = find_packages(tmp_path).packages["hidden"]
+    assert package.complete is False
+
+
+def test_setup_cfg_entry_points(tmp_path):
+    pkg = tmp_path / "cfg"
+    pkg.mkdir()
+    (pkg / "package.xml").write_text("<package><name>cfg</name></package>")
+    (pkg / "setup.cfg").write_text("[options.entry_points]\nconsole_scripts =\n    a = cfg.a:main\n")
+    package = find_packages(tmp_path).packages["cfg"]
+    assert (package.build_type, package.executables["a"].module) == ("ament_python", "cfg.a")
+
+
+YAML = """\
+# comment
+node:            # trailing comment
+  ros__parameters:
+    rate: 5.0
+    name: 'it''s'
+    list: [1, "two", {k: v}]
+    nested:
+      deep: true
+    seq:
+    - a
+    - b: 1
+      c: ~
+    hex: 0x1F
+    text: |
+      line one
+      line two
+"""
+
+
+def test_yaml_reader_values_and_lines():
+    doc = read_yaml(YAML)
+    assert doc.plain() == {"node": {"ros__parameters": {
+        "rate": 5.0, "name": "it's", "list": [1, "two", {"k": "v"}], "nested": {"deep": True},
+        "seq": ["a", {"b": 1, "c": None}], "hex": 31, "text": "line one\nline two\n"}}}
+    params = doc.value["node"].value["ros__parameters"]
+    assert params.key_lines["rate"] == 4
+    assert params.key_lines["hex"] == 13
+
+
+@pytest.mark.parametrize("text", ["a: [1, 2", "a:\n\tb: 1", "a: 'open", "a: 1\n b: 2"])
+def test_yaml_reader_rejects_what_it_cannot_read(text):
+    with pytest.raises(YamlError):
+        read_yaml(text)
+
+
+def test_substitutions():
+    assert parse_substitutions("plain") == Text("plain")
+    assert parse_substitutions("$(var robot)") == Var("robot")
+    assert parse_substitutions("$(find-pkg-share $(var pkg))/config/x.yaml") == \
+        Join((PkgShare(Var("pkg")), Text("/config/x.yaml")))
+    assert parse_substitutions("$(dirname)/a.xml") == Join((ThisDir(), Text("/a.xml")))
+    assert isinstance(parse_substitutions("$(env HOME)"), Unknown)
+    assert isinstance(parse_substitutions("$(var x"), Unknown)
+
+
+def test_parameter_file_sections_match_like_rcl(tmp_path):
+    (tmp_path / "p.yaml").write_text(
+        "/**:\n  ros__parameters:\n    a: 1\n"
+        "robot:\n  base:\n    ros__parameters:\n      b: {c: 2}\n"
+        "/*/cam:\n  ros__parameters:\n    d: 3\n")
+    sections = read_param_file(tmp_path, "p.yaml")
+    assert [(s.pattern, [(n, v, loc.line) for n, v, loc in s.settings]) for s in sections] == [
+        ("/**", [("a", 1, 3)]), ("/robot/base", [("b.c", 2, 7)]), ("/*/cam", [("d", 3, 10)])]
+    every, base, cam = sections
+    assert every.matches("/x") and every.matches("/a/b/c")
+    assert base.matches("/robot/base") and not base.matches("/base")
+    assert cam.matches("/r1/cam") and not cam.matches("/cam") and not cam.matches("/a/b/cam")
+
+
+@pytest.mark.parametrize("base, ns, expected", [
+    (None, None, None), (None, "a", "/a"), ("/r1", None, "/r1"), ("/r1", "a", "/r1/a"),
+    ("/r1", "/abs", "/abs"), ("/", "a", "/a"),
+])
+def test_prefix_namespace_like_launch_ros(base, ns, expected):
+    assert prefix_namespace(base, ns) == expected
