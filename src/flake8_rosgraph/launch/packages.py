@@ -123,6 +123,8 @@ def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
     if cmake.is_file():
         if not _cmake_executables(cmake, folder, root, package):
             package.complete = False
+    elif build_type != "ament_python":
+        package.complete = False  # a compiled package whose build file we cannot see
     return package
 
 
