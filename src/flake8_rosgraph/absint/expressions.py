@@ -136,12 +136,11 @@ class ExpressionSemantics:
         items = []
         for elt in node.elts:
             if isinstance(elt, ast.Starred):
-                inner = self.eval(elt.value)
-                seqs = [a for a in inner if isinstance(a, Seq)]
-                if len(seqs) == 1 and len(list(inner)) == 1:
-                    items.extend(seqs[0].items)
-                    continue
-                return atoms([Coll(kind, TOP)])
+                seq = _only(self.eval(elt.value), Seq)
+                if seq is None:
+                    return atoms([Coll(kind, TOP)])
+                items.extend(seq.items)
+                continue
             items.append(self.eval(elt))
         return atoms([Seq(kind, tuple(items))])
 
@@ -252,12 +251,11 @@ class ExpressionSemantics:
         star = False
         for arg in node.args:
             if isinstance(arg, ast.Starred):
-                inner = self.eval(arg.value)
-                seqs = [a for a in inner if isinstance(a, Seq)]
-                if len(seqs) == 1 and len(list(inner)) == 1:
-                    args.extend(seqs[0].items)
-                else:
+                seq = _only(self.eval(arg.value), Seq)
+                if seq is None:
                     star = True
+                else:
+                    args.extend(seq.items)
             else:
                 args.append(self.eval(arg))
         kwargs: dict[str, Value] = {}
@@ -266,11 +264,9 @@ class ExpressionSemantics:
             if kw.arg is not None:
                 kwargs[kw.arg] = value
             else:
-                dicts = [a for a in value if isinstance(a, DictAtom)]
-                if len(dicts) == 1 and len(list(value)) == 1 and all(
-                        k.strings() and len(k.strings()) == 1 for k, _ in dicts[0].items):
-                    for k, v in dicts[0].items:
-                        kwargs[k.strings()[0]] = v
+                mapping = _only(value, DictAtom)
+                if mapping is not None and all(len(k.strings() or ()) == 1 for k, _ in mapping.items):
+                    kwargs.update((k.strings()[0], v) for k, v in mapping.items)
                 else:
                     star = True
         return self.call(func, Args(args, kwargs, star), node)
@@ -316,6 +312,12 @@ class ExpressionSemantics:
             if len(seen) > 1:
                 return None
         return seen.pop()
+
+
+def _only(value: Value, kind: type):
+    """The value's single atom if it is exactly one atom of ``kind`` (``*x`` / ``**x`` unpacking)."""
+    items = list(value)
+    return items[0] if len(items) == 1 and isinstance(items[0], kind) else None
 
 
 def _const_tuples(value: Value) -> list[tuple] | None:
