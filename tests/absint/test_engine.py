@@ -47,3 +47,24 @@ def test_only_modules_reaching_an_active_library_are_entries(tmp_path):
 def test_budget_exhaustion_is_reported_not_raised(tmp_path):
     analysis = run(tmp_path, FILES, max_task_runs=1)
     assert any("budget" in d.message for d in analysis.diagnostics)
+
+
+def test_every_object_gets_its_own_constructor_analysis(tmp_path):
+    names = [f"n{i}" for i in range(20)]
+    analysis = run(tmp_path, {"fleet.py": "import rclpy\nfrom rclpy.node import Node\n"
+                              "class Member(Node):\n"
+                              "    def __init__(self, name):\n"
+                              "        super().__init__(name)\n"
+                              + "".join(f"m{i} = Member('{n}')\n" for i, n in enumerate(names))})
+    created = sorted(e.arg("name").strings()[0] for e in analysis.all_effects() if e.kind == "node")
+    assert created == sorted(names)
+
+
+def test_too_many_contexts_widen_arguments_and_say_so(tmp_path):
+    calls = "".join(f"make('t{i}')\n" for i in range(12))
+    analysis = run(tmp_path, {"m.py": "import rclpy\nnode = rclpy.create_node('n')\n"
+                              "def make(topic):\n"
+                              "    node.create_publisher(int, topic, 10)\n" + calls})
+    topics = [e.arg("topic") for e in analysis.all_effects() if e.kind == "publisher"]
+    assert any(t.is_top for t in topics)
+    assert any("more than 8 different ways" in d.message for d in analysis.diagnostics)

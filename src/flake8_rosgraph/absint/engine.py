@@ -73,6 +73,8 @@ class Analysis:
         self.heap: dict[Hashable, Value] = {}
         self.readers: dict[Hashable, dict[Task, None]] = {}
         self.contexts: dict[int, dict[tuple, None]] = {}
+        self._context_counts: dict[tuple, set[tuple]] = {}
+        self._overflowed: set[int] = set()
         self.effects: dict[Task, dict[tuple, Effect]] = {}
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
@@ -112,11 +114,27 @@ class Analysis:
             self._queue.append(task)
 
     def function_task(self, fid: int, ctx: tuple) -> Task:
-        """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts."""
+        """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts.
+
+        The bound counts contexts per function, and for methods per receiver: each
+        object gets its own analysis of ``__init__`` however many objects share a class.
+        Past the bound the other arguments become ⊤ (and a diagnostic says so once).
+        """
+        func = self.program.functions[fid]
+        method = func.cls is not None and func.kind == "function" and len(ctx) > 0
+        bucket = (fid, ctx[0]) if method else (fid,)
         seen = self.contexts.setdefault(fid, {})
-        if ctx not in seen and len(seen) >= MAX_CONTEXTS:
-            ctx = tuple(TOP for _ in ctx)
+        counted = self._context_counts.setdefault(bucket, set())
+        if ctx not in seen and len(counted) >= MAX_CONTEXTS:
+            ctx = ((ctx[0],) if method else ()) + tuple(TOP for _ in ctx[1 if method else 0:])
+            if fid not in self._overflowed:
+                self._overflowed.add(fid)
+                self.diagnostics.append(Diagnostic(
+                    func.module.path, getattr(func.node, "lineno", 1),
+                    f"{func.qualname} is called in more than {MAX_CONTEXTS} different ways; "
+                    "further calls are analysed with unknown arguments"))
         seen[ctx] = None
+        counted.add(ctx)
         self.called.add(fid)
         task = ("fn", fid, ctx)
         if task not in self._known:
