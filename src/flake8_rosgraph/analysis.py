@@ -44,7 +44,7 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
 def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
                     diagnostics: list[Diagnostic]) -> list:
     """The workspace's launch systems; a failure here must not cost the code-level graph."""
-    from .launch import systems_for
+    from .launch.api import systems_for
     try:
         return systems_for(root if root.is_dir() else root.parent, graph, analysis)
     except Exception as exc:

@@ -38,7 +38,7 @@ from typing import Any, Iterator
 from . import __version__
 from .graph.model import Diagnostic, Location
 from .options import Settings
-from .rules.base import Finding, RuleConfig
+from .findings import Finding, RuleConfig
 
 CACHE_DIR_NAME = ".rosgraph-cache"
 #: Version of the entry layout below; bump it when the layout changes.
@@ -268,7 +268,7 @@ def build_report(root: Path, settings: Settings) -> WorkspaceReport:
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
-    from .launch import judged_graph
+    from .launch.api import judged_graph
 
     graph = build_graph(root, tuple(settings.stub_files))
     config = RuleConfig(external_names=frozenset(settings.external_topics))

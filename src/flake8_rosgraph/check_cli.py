@@ -24,7 +24,7 @@ from .cache import workspace_report
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings
 from .root import discover_root, find_vcs_root
-from .rules.base import Finding
+from .findings import Finding
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 CHECK_CATEGORY = "flake8-rosgraph/check"

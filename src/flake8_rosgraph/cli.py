@@ -18,7 +18,7 @@ from . import __version__, check_cli
 def _graph(args: argparse.Namespace) -> int:
     from .analysis import build_graph
     from .graph.dot import to_dot
-    from .launch import apply, graph_to_json_obj, system_to_json
+    from .launch.api import apply, graph_to_json_obj, system_to_json
 
     root = Path(args.path)
     if not root.exists():

@@ -34,7 +34,7 @@ from . import __version__
 from .cache import WorkspaceReport, start_run, workspace_report
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options
 from .root import discover_root, find_vcs_root
-from .rules.base import Finding
+from .findings import Finding
 
 #: A flake8 plugin entry name that is a code prefix (``E``, ``F``, ``ROS``).
 _CODE_PREFIX = re.compile(r"^[A-Z]{1,3}[0-9]{0,3}$")

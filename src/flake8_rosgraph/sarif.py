@@ -35,7 +35,7 @@ from jschema_to_python.to_json import to_json
 from . import __version__
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE
-from .rules.base import Finding
+from .findings import Finding
 
 TOOL_NAME = "flake8-rosgraph"
 INFORMATION_URI = "https://github.com/flake8-rosgraph/flake8-rosgraph"

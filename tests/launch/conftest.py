@@ -11,7 +11,7 @@ from flake8_rosgraph.absint.program import Program
 from flake8_rosgraph.analysis import load_stubs
 from flake8_rosgraph.graph.builder import build_graph_from
 from flake8_rosgraph.graph.model import RosGraph
-from flake8_rosgraph.launch import System, systems_for
+from flake8_rosgraph.launch.api import System, systems_for
 from flake8_rosgraph.workspace import load_workspace
 
 WS = Path(__file__).parent / "ws"

@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from flake8_rosgraph.launch import (apply, graph_to_json_obj, judged_graph, system_for_file,
+from flake8_rosgraph.launch.api import (apply, graph_to_json_obj, judged_graph, system_for_file,
                                     system_to_json)
 from flake8_rosgraph.rules import run_rules
 from flake8_rosgraph.rules.base import RuleConfig

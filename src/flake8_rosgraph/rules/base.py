@@ -5,28 +5,12 @@ and yields :class:`Finding` objects located at the site a developer can fix.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import ClassVar, Iterator
 
-from ..graph.model import Location, RosGraph
+from ..findings import Finding, RuleConfig
+from ..graph.model import RosGraph
 
-
-@dataclass(frozen=True, order=True)
-class Finding:
-    """One reported problem: code, one-line message, where, and the other end(s)."""
-
-    location: Location
-    code: str
-    message: str
-    related: tuple[tuple[Location, str], ...] = ()
-
-
-@dataclass(frozen=True)
-class RuleConfig:
-    """User-tunable inputs of the rules (flake8 options, env vars, CLI flags)."""
-
-    #: Topics/services/actions handled outside the workspace, on top of the built-in exempt list.
-    external_names: frozenset[str] = field(default_factory=frozenset)
+__all__ = ["Finding", "Rule", "RuleConfig"]
 
 
 class Rule:

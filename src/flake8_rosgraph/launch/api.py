@@ -1,0 +1,108 @@
+"""Entry points of launch analysis for the CLI, the plugin and the rules:
+
+* :func:`systems_for` — every launch file of the workspace executed
+  statically (Python, XML and YAML front ends), each node bound to the code
+  its executable runs;
+* :func:`apply` — one system's instantiated graph (nodes renamed,
+  namespaced and remapped per rcl, each carrying ``launch`` info);
+* :func:`judged_graph` — the graph the ROS0xx rules should judge: launched
+  instances from every system plus the code nodes no launch file starts;
+* :func:`system_to_json` / :func:`graph_to_json_obj` — the JSON forms.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from ..absint.engine import Analysis
+from ..graph.json_out import to_json_obj
+from ..graph.model import RosGraph
+from .discover import LaunchReader, frontend_launch_files, python_launch_files
+from .execute import Executor
+from .instantiate import apply_systems, instantiate
+from .model import LaunchedNode, System
+from .packages import find_packages
+from .targets import TargetIndex
+
+
+def systems_for(root: Path, graph: RosGraph, analysis: Analysis | None) -> list[System]:
+    """Every launch system under ``root``, one per launch file, in path order."""
+    root = Path(root)
+    packages = find_packages(root)
+    targets = TargetIndex(analysis, packages)
+    reader = LaunchReader(root, analysis)
+    executor = Executor(root, packages, reader, targets.resolve)
+    files = sorted(set(python_launch_files(analysis)) | set(frontend_launch_files(root)))
+    systems = [executor.system(path) for path in files]
+    instantiate(root, graph, systems)
+    for system in systems:
+        system.problems = sorted(set(system.problems))
+    return systems
+
+
+def system_for_file(root: Path, graph: RosGraph, analysis: Analysis | None, launch_file: Path) -> System:
+    """The system of one launch file (``graph --launch FILE``)."""
+    root = Path(root)
+    path = Path(launch_file).resolve().relative_to(root.resolve()).as_posix()
+    packages = find_packages(root)
+    executor = Executor(root, packages, LaunchReader(root, analysis), TargetIndex(analysis, packages).resolve)
+    system = executor.system(path)
+    instantiate(root, graph, [system])
+    system.problems = sorted(set(system.problems))
+    return system
+
+
+def apply(graph: RosGraph, system: System) -> RosGraph:
+    """The instantiated graph of ``system`` (launched nodes; other code nodes as written)."""
+    return apply_systems(graph, [system], placeholders=True)
+
+
+def judged_graph(graph: RosGraph, systems: list[System]) -> RosGraph:
+    """What the graph rules judge: a topic connected after remapping is connected."""
+    judged = apply_systems(graph, systems, placeholders=False)
+    judged.diagnostics = list(graph.diagnostics)
+    judged.systems = systems
+    return judged
+
+
+def _launched_json(node: LaunchedNode) -> dict[str, Any]:
+    out: dict[str, Any] = {
+        "package": node.package, "executable": node.executable,
+        "name": node.name, "namespace": node.namespace,
+        "file": node.launch_file, "line": node.location.line, "column": node.location.column,
+        "status": node.target.status, "entry": node.target.entry,
+        "remappings": [{"from": r.source, "to": r.target, "line": r.location.line}
+                       for r in node.remaps],
+        "parameters": [{"name": p.name, "value": p.value} for p in node.params],
+        "parameter_files": [f.path if f.path is not None else f.written for f in node.param_files],
+    }
+    if node.conditional:
+        out["conditional"] = True
+    if node.unresolved:
+        out["unresolved"] = list(node.unresolved)
+    return out
+
+
+def system_to_json(system: System) -> dict[str, Any]:
+    """One system for the ``"systems"`` list of the graph JSON."""
+    return {
+        "launch_file": system.launch_file,
+        "files": list(system.files),
+        "complete": system.complete,
+        "arguments": dict(sorted(system.arguments.items())),
+        "nodes": [_launched_json(n) for n in system.nodes],
+        "problems": [{"path": d.path, "line": d.line, "message": d.message} for d in system.problems],
+    }
+
+
+def graph_to_json_obj(graph: RosGraph) -> dict[str, Any]:
+    """``to_json_obj`` plus ``"launch"`` on launched nodes (contract rosgraph/1 allows extra keys)."""
+    out = to_json_obj(graph)
+    for node, entry in zip(graph.nodes, out["nodes"]):
+        if node.launch is not None:
+            entry["launch"] = node.launch
+    return out
+
+
+__all__ = ["System", "apply", "graph_to_json_obj", "judged_graph", "system_for_file",
+           "system_to_json", "systems_for"]
