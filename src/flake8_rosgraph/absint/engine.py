@@ -116,16 +116,21 @@ class Analysis:
     def function_task(self, fid: int, ctx: tuple) -> Task:
         """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts.
 
-        The bound counts contexts per function, and for methods per receiver: each
-        object gets its own analysis of ``__init__`` however many objects share a class.
-        Past the bound the other arguments become ⊤ (and a diagnostic says so once).
+        A method's receiver is always kept, so every object is analysed as itself. The
+        bound counts the distinct *other* arguments per function — per receiver for
+        ``__init__``, which runs once per object, so that a fleet of nodes built from one
+        class keeps every name. Past the bound the other arguments become ⊤ (and a
+        diagnostic says so once): a logging helper called with a hundred messages costs
+        nine analyses, not a hundred.
         """
         func = self.program.functions[fid]
         method = func.cls is not None and func.kind == "function" and len(ctx) > 0
-        bucket = (fid, ctx[0]) if method else (fid,)
+        per_object = method and getattr(func.node, "name", "") == "__init__"
+        bucket = (fid, ctx[0]) if per_object else (fid,)
+        rest = ctx[1:] if method else ctx
         seen = self.contexts.setdefault(fid, {})
         counted = self._context_counts.setdefault(bucket, set())
-        if ctx not in seen and len(counted) >= MAX_CONTEXTS:
+        if ctx not in seen and rest not in counted and len(counted) >= MAX_CONTEXTS:
             ctx = ((ctx[0],) if method else ()) + tuple(TOP for _ in ctx[1 if method else 0:])
             if fid not in self._overflowed:
                 self._overflowed.add(fid)
@@ -134,7 +139,7 @@ class Analysis:
                     f"{func.qualname} is called in more than {MAX_CONTEXTS} different ways; "
                     "further calls are analysed with unknown arguments"))
         seen[ctx] = None
-        counted.add(ctx)
+        counted.add(ctx[1:] if method else ctx)
         self.called.add(fid)
         task = ("fn", fid, ctx)
         if task not in self._known:

@@ -32,6 +32,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
         self.program = analysis.program
         self.lib = analysis.library
         self.frame: Frame | None = None
+        self._mro_memo: dict[int, tuple[list, tuple]] = {}
 
     # =====================================================================================
     # tasks and CFGs

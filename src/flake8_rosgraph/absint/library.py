@@ -173,9 +173,17 @@ class LibraryModel:
     constants: dict[str, Value] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)
+    _canonical: dict[str, str] = field(default_factory=dict, repr=False)
+    _mro: dict[str, list[str]] = field(default_factory=dict, repr=False)
 
     def canonical(self, qualname: str) -> str:
         """Follow aliases (longest dotted prefix first): ``rclpy.lifecycle.Node`` → ``…LifecycleNode``."""
+        known = self._canonical.get(qualname)
+        if known is None:
+            known = self._canonical[qualname] = self._follow_aliases(qualname)
+        return known
+
+    def _follow_aliases(self, qualname: str) -> str:
         for _ in range(8):
             parts = qualname.split(".")
             for cut in range(len(parts), 0, -1):
@@ -190,6 +198,12 @@ class LibraryModel:
 
     def mro(self, qualname: str) -> list[str]:
         """Library classes from ``qualname`` up its modelled bases (depth-first, no repeats)."""
+        known = self._mro.get(qualname)
+        if known is None:
+            known = self._mro[qualname] = self._library_mro(qualname)
+        return known
+
+    def _library_mro(self, qualname: str) -> list[str]:
         out: list[str] = []
         stack = [qualname]
         while stack:

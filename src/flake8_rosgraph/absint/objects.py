@@ -130,19 +130,38 @@ class ObjectSemantics:
     def library_bases(self, cid: int) -> list[str]:
         return [a.qualname for a in self.mro(ClassAtom(cid)) if isinstance(a, Extern)]
 
-    def mro(self, cls: Atom, _seen: frozenset = frozenset()) -> list[Atom]:
-        """C3 linearisation over user classes (bases as analysed) and modelled library classes."""
+    def mro(self, cls: Atom) -> list[Atom]:
+        """C3 linearisation over user classes (bases as analysed) and modelled library classes.
+
+        Memoised per class together with the analysed bases it was computed from; a hit
+        still reads those bases so that the current task is re-run if they grow.
+        """
         if isinstance(cls, Extern):
             return [Extern(q) for q in self.lib.mro(cls.qualname)]
-        if not isinstance(cls, ClassAtom) or cls in _seen:
+        if not isinstance(cls, ClassAtom):
             return []
-        key = ("bases", cls.cid)
-        bases_value = self.an.read(key, self.frame.task) if self.frame else \
-            self.an.heap.get(key, BOTTOM)
-        bases = _flatten_bases(bases_value)
-        seqs = [self.mro(b, _seen | {cls}) for b in bases] + [bases]
-        return [cls] + _c3_merge(seqs)
+        memo = self._mro_memo.get(cls.cid)
+        if memo is not None and all(self._bases_value(cid) == value for cid, value in memo[1]):
+            return memo[0]
+        used: list[tuple[int, Value]] = []
+        result = self._linearise(cls, frozenset(), used)
+        self._mro_memo[cls.cid] = (result, tuple(used))
+        return result
 
+    def _bases_value(self, cid: int) -> Value:
+        key = ("bases", cid)
+        return self.an.read(key, self.frame.task) if self.frame else self.an.heap.get(key, BOTTOM)
+
+    def _linearise(self, cls: Atom, seen: frozenset, used: list) -> list[Atom]:
+        if isinstance(cls, Extern):
+            return [Extern(q) for q in self.lib.mro(cls.qualname)]
+        if not isinstance(cls, ClassAtom) or cls in seen:
+            return []
+        bases_value = self._bases_value(cls.cid)
+        used.append((cls.cid, bases_value))
+        bases = _flatten_bases(bases_value)
+        seqs = [self._linearise(b, seen | {cls}, used) for b in bases] + [bases]
+        return [cls] + _c3_merge(seqs)
 
 def _flatten_bases(value: Value) -> list[Atom]:
     """Base classes in source order from the analysed ``(base, …)`` tuples of a class."""

@@ -12,7 +12,7 @@ Nothing here knows about ROS.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Iterable, Iterator, Union
 
 #: Bound on the number of atoms a value may hold before it widens to ⊤.
@@ -101,6 +101,10 @@ class Seq:
 
     kind: str  # "tuple" | "list"
     items: tuple["Value", ...]
+    depth: int = field(init=False, compare=False, repr=False, default=0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "depth", 1 + max((v.depth for v in self.items), default=0))
 
 
 @dataclass(frozen=True)
@@ -109,6 +113,10 @@ class Coll:
 
     kind: str
     elem: "Value"
+    depth: int = field(init=False, compare=False, repr=False, default=0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "depth", 1 + self.elem.depth)
 
 
 @dataclass(frozen=True)
@@ -116,6 +124,11 @@ class DictAtom:
     """A dict literal with (key, value) pairs."""
 
     items: tuple[tuple["Value", "Value"], ...]
+    depth: int = field(init=False, compare=False, repr=False, default=0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "depth", 1 + max(
+            (max(k.depth, v.depth) for k, v in self.items), default=0))
 
 
 @dataclass(frozen=True)
@@ -148,6 +161,11 @@ class Value:
         self.atoms = items
         self.soft = soft and items is not None
         self._hash = hash((items, self.soft))
+
+    @property
+    def depth(self) -> int:
+        """Container nesting of the deepest atom (0 for ⊤ and scalars)."""
+        return max((getattr(a, "depth", 0) for a in self.atoms), default=0) if self.atoms else 0
 
     @property
     def is_top(self) -> bool:
@@ -214,24 +232,11 @@ class Value:
         return sorted(vals)
 
 
+_CONTAINERS = (Seq, Coll, DictAtom)
 TOP = Value(None)
 BOTTOM = Value(frozenset())
 #: Either boolean: the value of a test the analysis cannot decide.
 BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
-
-
-def _depth(atom: Atom) -> int:
-    if isinstance(atom, Seq):
-        return 1 + max((_value_depth(v) for v in atom.items), default=0)
-    if isinstance(atom, Coll):
-        return 1 + _value_depth(atom.elem)
-    if isinstance(atom, DictAtom):
-        return 1 + max((max(_value_depth(k), _value_depth(v)) for k, v in atom.items), default=0)
-    return 0
-
-
-def _value_depth(value: Value) -> int:
-    return max((_depth(a) for a in value), default=0)
 
 
 def _bounded(items: frozenset, soft: bool = False) -> Value:
@@ -243,7 +248,7 @@ def _bounded(items: frozenset, soft: bool = False) -> Value:
 def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     """The value holding exactly ``items`` (⊤ past the bounds)."""
     items = frozenset(items)
-    if any(_depth(a) > MAX_DEPTH for a in items):
+    if any(type(a) in _CONTAINERS and a.depth > MAX_DEPTH for a in items):
         return TOP
     return _bounded(items, soft)
 
