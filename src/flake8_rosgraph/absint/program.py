@@ -98,6 +98,9 @@ class _Scope:
 
 
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+#: Node kinds that bind, read and define nothing: not worth a visit.
+_NOTHING_INSIDE = (ast.expr_context, ast.operator, ast.boolop, ast.unaryop, ast.cmpop,
+                   ast.Constant, ast.Pass, ast.Break, ast.Continue)
 
 
 class Program:
@@ -204,7 +207,8 @@ class Program:
                     scope.generator = True
                 elif isinstance(node, ast.NamedExpr) and isinstance(node.target, ast.Name):
                     scope.bound.add(node.target.id)
-                todo += [(c, scope, prefix, fid, cid) for c in ast.iter_child_nodes(node)]
+                todo += [(c, scope, prefix, fid, cid) for c in ast.iter_child_nodes(node)
+                         if not isinstance(c, _NOTHING_INSIDE)]
             stack.extend(reversed(todo))
         mod.globals = frozenset(top.bound - top.glob)
         self.imports[mod.name] = frozenset(imported)
