@@ -115,17 +115,18 @@ def workspace_table(corpus: Corpus, source: str, runs: int, summaries: dict[str,
 
 
 def workspace_targets(summaries: dict[str, Summary]) -> list[Target]:
-    """The per-workspace targets (ratios of the same files in the same run)."""
+    """The per-workspace targets (ratios of the same files in the same run).
+
+    The "graph command well under one second" target is about ros2/demos only, so
+    it is read off that workspace's table rather than judged on every workspace.
+    """
     def ratio_target(name: str, key: str, base: str, limit: float) -> Target:
         return Target(name, _ratio(summaries, key, base), limit, "×", _ratio(summaries, key, base, cpu=True))
 
-    graph = summaries.get("graph")
     return [
         ratio_target("flake8 + plugin cold ÷ flake8 without", "cold", "flake8", 1.20),
         ratio_target("flake8 + plugin warm ÷ flake8 without", "warm", "flake8", 1.02),
         ratio_target("one file changed ÷ warm (≈ warm)", "changed", "warm", 1.05),
-        Target("graph command time (target set on ros2/demos)", graph and graph.wall_s, 1.0, " s",
-               graph and graph.cpu_s),
     ]
 
 
@@ -137,15 +138,15 @@ def targets_table(targets: Sequence[Target]) -> str:
 def growth_table(points: Sequence[GrowthPoint], runs: int) -> str:
     """One row per scale: size, median wall times and peak memory of each step."""
     keys = list(points[0].summaries)
-    labels = {"ast": "ast.parse s", "flake8": "flake8 w/o s", "cold": "flake8 + plugin cold s",
-              "graph": "graph s"}
-    head = ["scale", "files", "lines"] + [labels[k] for k in keys] + [
-        f"peak MB {labels[k][:-2]}" for k in keys if k != "ast"]
-    rows = [f"growth series: synthetic workspace (benchmarks/synth.py); median of {runs} run(s)", "",
+    labels = {"ast": "ast.parse", "flake8": "flake8 w/o", "cold": "flake8 + plugin cold", "graph": "graph"}
+    head = ["scale", "files", "lines"] + [f"{labels[k]} s" for k in keys] + [
+        f"peak MB {labels[k]}" for k in keys if k != "ast"]
+    rows = [f"growth series: synthetic workspace (benchmarks/synth.py); median of {runs} run(s), "
+            "wall s (CPU s)", "",
             "| " + " | ".join(head) + " |", "|" + "---:|" * len(head)]
     for p in points:
         cells = [f"{p.scale}×", str(p.files), f"{p.lines:,}"]
-        cells += [f"{p.summaries[k].wall_s:.3f}" for k in keys]
+        cells += [f"{p.summaries[k].wall_s:.3f} ({p.summaries[k].cpu_s:.3f})" for k in keys]
         cells += [_fmt(p.summaries[k].peak_mb, ".1f") for k in keys if k != "ast"]
         rows.append("| " + " | ".join(cells) + " |")
     return "\n".join(rows)
