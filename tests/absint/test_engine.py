@@ -68,3 +68,21 @@ def test_too_many_contexts_widen_arguments_and_say_so(tmp_path):
     topics = [e.arg("topic") for e in analysis.all_effects() if e.kind == "publisher"]
     assert any(t.is_top for t in topics)
     assert any("more than 8 different ways" in d.message for d in analysis.diagnostics)
+
+
+def test_counters_in_callbacks_are_widened_not_counted_up(tmp_path):
+    analysis = run(tmp_path, {"n.py": """
+        import rclpy
+        from rclpy.node import Node
+        class Ticker(Node):
+            def __init__(self):
+                super().__init__('ticker')
+                self.count = 0
+                self.create_timer(0.1, self.tick)
+            def tick(self):
+                self.count += 1
+        Ticker()
+    """})
+    counts = [v for k, v in analysis.heap.items() if k[0] == "a" and k[2] == "count"]
+    assert counts and counts[0].is_top
+    assert analysis.task_runs < 15  # not one run per value of the counter

@@ -33,6 +33,8 @@ MAX_CONTEXTS = 8
 MAX_BLOCK_VISITS = 4000
 #: Visits of a loop head before its environment is widened.
 WIDEN_AFTER = 3
+#: Growths of a heap cell holding only numbers before it is widened to ⊤.
+HEAP_WIDEN_AFTER = 3
 
 Task = tuple  # ("mod", module name, ()) | ("fn", fid, ctx)
 
@@ -74,6 +76,7 @@ class Analysis:
         self.readers: dict[Hashable, dict[Task, None]] = {}
         self.contexts: dict[int, dict[tuple, None]] = {}
         self._context_counts: dict[tuple, set[tuple]] = {}
+        self._growth: dict[Hashable, int] = {}
         self._overflowed: set[int] = set()
         self.effects: dict[Task, dict[tuple, Effect]] = {}
         self.allocated: set[int] = set()           # cids instantiated by analysed code
@@ -102,6 +105,9 @@ class Analysis:
         old = self.heap.get(key, BOTTOM)
         new = old.join(value)
         if new != old:
+            growth = self._growth[key] = self._growth.get(key, 0) + 1
+            if growth > HEAP_WIDEN_AFTER and _numbers_only(new):
+                new = TOP  # a counter (``self.count += 1``): widen instead of counting up
             self.heap[key] = new
             for reader in self.readers.get(key, ()):
                 self.enqueue(reader)
@@ -242,3 +248,9 @@ class Analysis:
             for eff in effects.values():
                 seen[eff] = None
         return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
+
+
+def _numbers_only(value: Value) -> bool:
+    consts = value.consts()
+    return bool(consts) and all(isinstance(c, (int, float)) and not isinstance(c, bool)
+                                for c in consts)
