@@ -66,7 +66,8 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
         diagnostics.extend(Diagnostic(m.path, 1, why) for m, why in program.rejected)
         analysis = Analysis(program, library)
         analysis.run()
-        diagnostics.extend(Diagnostic(d.path, d.line, d.message) for d in analysis.diagnostics)
+        diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
+                           for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback

@@ -26,6 +26,8 @@ def _graph(args: argparse.Namespace) -> int:
         return 2
     graph = build_graph(root, [Path(s) for s in args.stubs])
     for diag in graph.diagnostics:
+        if diag.severity == "info" and not args.verbose:
+            continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(f"{where}{diag.severity}: {diag.message}", file=sys.stderr)
     shown = graph
@@ -72,6 +74,8 @@ def make_parser() -> argparse.ArgumentParser:
     graph.add_argument("--output", "-o", help="write to this file instead of stdout")
     graph.add_argument("--stubs", action="append", default=[], metavar="FILE",
                        help="extra library model (TOML); repeatable")
+    graph.add_argument("--verbose", "-v", action="store_true",
+                       help="also print informational diagnostics (analysis precision bounds)")
     graph.add_argument("--launch", metavar="FILE",
                        help="print the system this launch file starts (names, namespaces and "
                             "remappings applied) instead of the code-level graph")

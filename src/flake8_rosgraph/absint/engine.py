@@ -63,6 +63,7 @@ class Diagnostic:
     path: str
     line: int
     message: str
+    severity: str = "warning"  # "info" for precision given up on purpose (context bounds)
 
 
 class Analysis:
@@ -143,7 +144,7 @@ class Analysis:
                 self.diagnostics.append(Diagnostic(
                     func.module.path, getattr(func.node, "lineno", 1),
                     f"{func.qualname} is called in more than {MAX_CONTEXTS} different ways; "
-                    "further calls are analysed with unknown arguments"))
+                    "further calls are analysed with unknown arguments", "info"))
         seen[ctx] = None
         counted.add(ctx[1:] if method else ctx)
         self.called.add(fid)
