@@ -66,6 +66,7 @@ class CFG:
     exit: int
     blocks: dict[int, Block]
     loop_heads: frozenset[int]
+    _exit_dominators: frozenset[int] | None = field(default=None, repr=False, compare=False)
 
     def preds(self, exceptional: bool = True) -> dict[int, list[int]]:
         out: dict[int, list[int]] = {b: [] for b in self.blocks}
@@ -81,7 +82,12 @@ class CFG:
         """Blocks on every exception-free path from entry to the normal exit: their
         operations always run unless something raises (an entity created inside
         ``try: … except KeyboardInterrupt:`` is not "conditional"). Classic iterative
-        algorithm over the normal edges."""
+        algorithm over the normal edges; computed once per CFG."""
+        if self._exit_dominators is None:
+            self._exit_dominators = self._compute_exit_dominators()
+        return self._exit_dominators
+
+    def _compute_exit_dominators(self) -> frozenset[int]:
         preds = self.preds(exceptional=False)
         order = sorted(self.blocks)
         every = frozenset(order)
