@@ -171,7 +171,8 @@ class Analysis:
         self.relevant = set(self.program.modules) if self.every_module_is_entry \
             else self.relevant_modules()
         for name in sorted(self.relevant):
-            self.enqueue(("mod", name, ()))
+            if self.program.ensure(name) is not None:
+                self.enqueue(("mod", name, ()))
         self._drain()
         while not self._exhausted and (self._uncalled_functions() or self._entry_classes()):
             self._drain()

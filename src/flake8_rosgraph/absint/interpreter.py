@@ -39,7 +39,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
     # =====================================================================================
     def run_task(self, task: Task) -> tuple[Value, dict]:
         if task[0] == "mod":
-            module = self.program.modules[task[1]]
+            module = self.program.ensure(task[1])
+            if module is None:  # too deeply nested to walk: reported by the program
+                return BOTTOM, {}
             frame = Frame(task, module)
             env: Env = {}
         else:
@@ -204,7 +206,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
             self.store_name(alias.asname or alias.name, self.import_member(base, alias.name))
 
     def _star_import(self, base: str) -> None:
-        module = self.program.modules.get(base)
+        module = self.program.ensure(base)
         if module is None:
             return  # names from a library star import stay unknown (⊤ on lookup)
         for name in sorted(module.globals):
@@ -317,6 +319,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
         return self.load_global(frame.module, name)
 
     def load_global(self, module: Module, name: str) -> Value:
+        self.program.ensure(module.name)
         if name in module.globals:
             return self.an.read(("g", module.name, name), self.frame.task)
         if name == "__name__":
@@ -335,7 +338,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
         full = f"{base}.{name}" if base else name
         if full in self.program.modules:
             return atoms([ModuleAtom(full)])
-        module = self.program.modules.get(base)
+        module = self.program.ensure(base)
         if module is not None:
             return self.load_global(module, name) if name in module.globals else TOP
         return self.extern(full)

@@ -119,15 +119,31 @@ class Program:
         #: of an object with library bases can only come from the library.
         self.stored_attrs: set[str] = set()
         self.rejected: list[tuple[Module, str]] = []
-        for mod in list(self.modules.values()):
+        self._collected: set[str] = set()
+        for mod in self.modules.values():
+            self.imports[mod.name] = _statement_imports(self, mod)
+
+    def ensure(self, name: str) -> Module | None:
+        """The module, its functions and classes numbered and its scopes gathered (done on
+        first use: modules the analysis never needs are never walked). ``None`` if the
+        module is unknown or nested too deeply to walk."""
+        mod = self.modules.get(name)
+        if mod is None or name in self._collected:
+            return mod
+        self._collected.add(name)
+        try:
             self._collect(mod)
+        except RecursionError:
+            mod.globals = frozenset()
+            self.rejected.append((mod, "nested too deeply to analyse"))
+            return None
+        return mod
 
     # -- building ---------------------------------------------------------------------
     def _collect(self, mod: Module) -> None:
         """One iterative walk over a module: number functions/classes, gather scopes."""
         top = _Scope()
         scopes: list[_Scope] = []
-        imported: set[str] = set()
         # (node, scope, qualname prefix, enclosing fid, class cid the node is directly in)
         stack: list[tuple[ast.AST, _Scope, str, int | None, int | None]] = [
             (child, top, "", None, None) for child in reversed(mod.tree.body)]
@@ -187,12 +203,6 @@ class Program:
                     self.stored_attrs.add(node.attr)
                 elif isinstance(node, ast.alias):
                     scope.bound.add((node.asname or node.name).split(".")[0])
-                elif isinstance(node, ast.Import):
-                    imported.update(a.name for a in node.names)
-                elif isinstance(node, ast.ImportFrom):
-                    base = self.resolve_import(mod, node.module, node.level)
-                    imported.add(base)
-                    imported.update(f"{base}.{a.name}" for a in node.names)
                 elif isinstance(node, ast.Global):
                     scope.glob.update(node.names)
                 elif isinstance(node, ast.Nonlocal):
@@ -211,7 +221,6 @@ class Program:
                          if not isinstance(c, _NOTHING_INSIDE)]
             stack.extend(reversed(todo))
         mod.globals = frozenset(top.bound - top.glob)
-        self.imports[mod.name] = frozenset(imported)
         for sc in scopes:
             func = self.functions[sc.fid]
             func.locals = frozenset(sc.bound - sc.glob - sc.nonloc)
@@ -258,3 +267,25 @@ class Program:
                 return parent
             parent = outer.parent
         return None
+
+
+def _statement_imports(program: Program, mod: Module) -> frozenset[str]:
+    """Absolute names a module imports, anywhere (imports are statements, so only
+    statement lists are walked — cheap enough to do for every file up front)."""
+    out: set[str] = set()
+    stack = list(mod.tree.body)
+    while stack:
+        stmt = stack.pop()
+        if isinstance(stmt, ast.Import):
+            out.update(a.name for a in stmt.names)
+        elif isinstance(stmt, ast.ImportFrom):
+            base = program.resolve_import(mod, stmt.module, stmt.level)
+            out.add(base)
+            out.update(f"{base}.{a.name}" for a in stmt.names)
+        else:
+            for name in ("body", "orelse", "finalbody", "handlers", "cases"):
+                children = getattr(stmt, name, None)
+                if isinstance(children, list):
+                    stack.extend(c for c in children if isinstance(c, (ast.stmt, ast.excepthandler,
+                                                                        ast.match_case)))
+    return frozenset(out)
