@@ -172,8 +172,8 @@ def report_from_obj(obj: Any, root: Path, key: str) -> WorkspaceReport:
 def _read_entry(entry: Path, root: Path, key: str) -> WorkspaceReport | None:
     try:
         return report_from_obj(json.loads(entry.read_text(encoding="utf-8")), root, key)
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
+    except (OSError, ValueError, KeyError, TypeError, RecursionError):
+        return None  # unreadable, corrupt or hostile: rebuilt
 
 
 def _write_entry(entry: Path, report: WorkspaceReport, key: str) -> None:
