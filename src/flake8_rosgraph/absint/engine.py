@@ -154,10 +154,12 @@ class Analysis:
         return task
 
     def context_index(self, fid: int, ctx: tuple) -> int:
-        """A stable small number for a context of ``fid`` (its order of discovery)."""
+        """A stable small number for a context of ``fid`` (its order of discovery), capped
+        at :data:`MAX_CONTEXTS` so that recursion through allocation (a constructor that
+        builds another instance of its class) makes finitely many objects."""
         for index, known in enumerate(self.contexts.get(fid, ())):
             if known == ctx:
-                return index
+                return min(index, MAX_CONTEXTS)
         return 0
 
     def call_summary(self, fid: int, ctx: tuple, caller: Task) -> Value:
