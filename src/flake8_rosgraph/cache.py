@@ -27,6 +27,7 @@ import contextlib
 import hashlib
 import json
 import os
+import stat
 import sys
 import tempfile
 import time
@@ -68,6 +69,10 @@ class WorkspaceReport:
 # -- the key -------------------------------------------------------------------------------------
 
 def _sha256_file(path: Path) -> str:
+    """Content hash of a regular file; FIFOs and devices (which never end) hash as such."""
+    info = path.stat()
+    if not stat.S_ISREG(info.st_mode):
+        return f"special:{stat.S_IFMT(info.st_mode)}"
     digest = hashlib.sha256()
     with path.open("rb") as handle:
         for block in iter(lambda: handle.read(1 << 16), b""):

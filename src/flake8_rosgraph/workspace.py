@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 import io
 import os
+import stat
 import tokenize
 from dataclasses import dataclass
 from pathlib import Path
@@ -74,9 +75,15 @@ def relative(path: Path, root: Path) -> str:
 def read_module(path: Path, root: Path) -> Module | Diagnostic:
     rel = relative(path, root)
     try:
-        if path.stat().st_size > MAX_FILE_BYTES:
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode):  # a FIFO or device would block or never end
+            return Diagnostic(rel, 1, "skipped: not a regular file")
+        if info.st_size > MAX_FILE_BYTES:
             return Diagnostic(rel, 1, f"skipped: larger than {MAX_FILE_BYTES // (1024 * 1024)} MiB")
-        data = path.read_bytes()
+        with path.open("rb") as handle:
+            data = handle.read(MAX_FILE_BYTES + 1)  # the file may grow after stat()
+        if len(data) > MAX_FILE_BYTES:
+            return Diagnostic(rel, 1, f"skipped: larger than {MAX_FILE_BYTES // (1024 * 1024)} MiB")
     except OSError as exc:
         return Diagnostic(rel, 1, f"cannot read file: {exc.strerror or exc}")
     try:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 import itertools
 import operator
+import re
 from typing import Any, Callable
 
 from .values import MAX_ATOMS, TOP, Value, atoms, Const
@@ -59,8 +60,23 @@ def _safe(result: Any) -> bool:
     return isinstance(result, (float, bool, complex)) or result is None
 
 
+#: A width or precision in a format template big enough to build a huge string.
+_WIDE = re.compile(r"\d{5,}")
+#: str methods whose integer argument is the length of the result.
+_WIDTH_METHODS = frozenset({"center", "ljust", "rjust", "zfill"})
+
+
+def wide_template(text: object) -> bool:
+    """Whether a format template/spec asks for a field wider than :data:`MAX_STR`."""
+    return isinstance(text, str) and any(int(m) > MAX_STR for m in _WIDE.findall(text))
+
+
 def _guard_args(fn: Callable, args: tuple) -> bool:
     """Refuse operations that could take unbounded time or memory before running them."""
+    if fn is operator.mod and args and wide_template(args[0]):
+        return False
+    if fn is format and len(args) == 2 and wide_template(args[1]):
+        return False
     if fn is operator.pow and len(args) == 2:
         base, exp = args
         return isinstance(exp, (int, float)) and abs(exp) <= 64
@@ -113,6 +129,9 @@ def fold(fn: Callable[..., Any], operands: list[Value], wrap=None) -> Value:
 
 def call_str_method(name: str, receiver: Value, args: list[Value]) -> Value:
     if name not in STR_METHODS:
+        return TOP
+    if name in _WIDTH_METHODS and any(
+            isinstance(c, int) and c > MAX_STR for a in args for c in (a.consts() or ())):
         return TOP
     return fold(lambda s, *a: getattr(s, name)(*a) if isinstance(s, str) else _fail(),
                 [receiver, *args], wrap=_wrap_seq)
