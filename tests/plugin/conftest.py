@@ -174,6 +174,9 @@ def flake8_401_venv(tmp_path_factory: pytest.TempPathFactory) -> Path:
     Proves the plugin on the oldest supported flake8 and hosts the ament_flake8
     test. Needs PyPI, like any fresh install.
     """
+    if sys.version_info >= (3, 12):
+        pytest.skip("flake8 4.0.1 (ROS 2 Humble's) does not run on Python >= 3.12 "
+                    "(importlib.metadata API); the Python 3.10 CI leg covers it")
     venv = tmp_path_factory.mktemp("venv-flake8-401")
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True, timeout=300)
     python = venv / "bin" / "python"
