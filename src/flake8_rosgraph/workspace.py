@@ -12,6 +12,7 @@ import ast
 import io
 import os
 import stat
+import sys
 import tokenize
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,6 +26,8 @@ SKIP_DIRS = frozenset({
     ".venv", "venv", "node_modules", ".mypy_cache", ".pytest_cache", ".rosgraph-cache",
     "site-packages", ".eggs",
 })
+#: On Python 3.10, longer lines are not parsed (its parser may segfault on deep chains).
+MAX_LINE_PY310 = 100_000
 #: Files larger than this are not analysed (a generated file, not a node).
 MAX_FILE_BYTES = 4 * 1024 * 1024
 
@@ -91,6 +94,10 @@ def read_module(path: Path, root: Path) -> Module | Diagnostic:
         text = data.decode(encoding)
     except (SyntaxError, LookupError, UnicodeDecodeError) as exc:
         return Diagnostic(rel, 1, f"cannot decode file: {exc}")
+    if sys.version_info < (3, 11) and any(len(line) > MAX_LINE_PY310 for line in text.splitlines()):
+        # CPython 3.10's parser can crash the interpreter (not raise) on such lines.
+        return Diagnostic(rel, 1, f"skipped: a line longer than {MAX_LINE_PY310:,} characters "
+                                  "is nested too deeply to parse safely on Python 3.10")
     try:
         tree = ast.parse(data, filename=rel)
     except SyntaxError as exc:
