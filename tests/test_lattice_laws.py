@@ -1,0 +1,243 @@
+"""Lattice laws of the abstract values (``absint.values``), checked on random values.
+
+The fixpoint engine is only guaranteed to terminate, and to give the same
+result whatever order it visits things in, if join is a least upper bound
+(commutative, associative, idempotent, consistent with ``leq``) and widening
+turns every ascending chain into one that stabilises after a bounded number of
+steps. These properties are tested here on values drawn from small domains, so
+that random values often overlap, nest and hit the size and depth bounds.
+"""
+from __future__ import annotations
+
+from functools import reduce
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, TOP, ClassAtom, Coll, Const, DictAtom,
+                                           Extern, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms, join_all)
+
+LAWS = settings(max_examples=300, deadline=None, database=None,
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+
+constants = st.one_of(
+    st.sampled_from(["", "a", "b", "/chatter", "~/x"]),
+    st.text(alphabet="ab/_", max_size=3),
+    st.integers(-2, 2),
+    st.floats(allow_nan=True, allow_infinity=True, width=16),
+    st.booleans(),
+    st.none(),
+    st.binary(max_size=2),
+).map(Const.of)
+
+classes = st.one_of(st.builds(ClassAtom, st.integers(0, 3)),
+                    st.sampled_from(["rclpy.node.Node", "std_msgs.msg.String"]).map(Extern))
+
+leaf_atoms = st.one_of(
+    constants,
+    st.sampled_from(["rclpy.node.Node", "rclpy.qos.QoSProfile", "std_msgs.msg.String", "os.path"]).map(Extern),
+    st.builds(Obj, st.sampled_from(["a.py:1:0", "a.py:2:4", "b.py:9:8"]), classes),
+    st.builds(FuncAtom, st.integers(0, 3)),
+    st.builds(ClassAtom, st.integers(0, 3)),
+    st.sampled_from(["pkg", "pkg.mod"]).map(ModuleAtom),
+)
+
+
+def _value_of(atom_lists: st.SearchStrategy) -> st.SearchStrategy[Value]:
+    return st.one_of(st.just(TOP), st.just(BOTTOM), st.lists(atom_lists, max_size=6).map(atoms))
+
+
+def _extend(inner: st.SearchStrategy) -> st.SearchStrategy:
+    """Containers of values built from ``inner`` atoms: tuples/lists, collections, dicts."""
+    values = _value_of(inner)
+    return st.one_of(
+        st.builds(Seq, st.sampled_from(["tuple", "list"]), st.lists(values, max_size=3).map(tuple)),
+        st.builds(Coll, st.sampled_from(["list", "set"]), values),
+        st.builds(DictAtom, st.lists(st.tuples(values, values), max_size=2).map(tuple)),
+    )
+
+
+any_atom = st.recursive(leaf_atoms, _extend, max_leaves=8)
+any_value = _value_of(any_atom)
+
+
+def _depth(atom) -> int:
+    if isinstance(atom, Seq):
+        return 1 + max((_value_depth(v) for v in atom.items), default=0)
+    if isinstance(atom, Coll):
+        return 1 + _value_depth(atom.elem)
+    if isinstance(atom, DictAtom):
+        return 1 + max((max(_value_depth(k), _value_depth(v)) for k, v in atom.items), default=0)
+    return 0
+
+
+def _value_depth(value: Value) -> int:
+    return max((_depth(a) for a in value), default=0)
+
+
+# -- join --------------------------------------------------------------------------------------
+
+@LAWS
+@given(any_value, any_value)
+def test_join_is_commutative(a: Value, b: Value) -> None:
+    assert a.join(b) == b.join(a)
+
+
+@LAWS
+@given(any_value, any_value, any_value)
+def test_join_is_associative(a: Value, b: Value, c: Value) -> None:
+    assert a.join(b).join(c) == a.join(b.join(c))
+
+
+@LAWS
+@given(any_value)
+def test_join_is_idempotent(a: Value) -> None:
+    assert a.join(a) == a
+
+
+@LAWS
+@given(any_value, any_value)
+def test_join_is_an_upper_bound(a: Value, b: Value) -> None:
+    joined = a.join(b)
+    assert a.leq(joined) and b.leq(joined)
+
+
+@LAWS
+@given(any_value, any_value, any_value)
+def test_join_is_the_least_upper_bound(a: Value, b: Value, c: Value) -> None:
+    if a.leq(c) and b.leq(c):
+        assert a.join(b).leq(c)
+
+
+@LAWS
+@given(st.lists(any_value, max_size=6))
+def test_join_all_is_the_fold_of_join(values: list[Value]) -> None:
+    assert join_all(values) == reduce(Value.join, values, BOTTOM)
+
+
+# -- order -------------------------------------------------------------------------------------
+
+@LAWS
+@given(any_value, any_value)
+def test_leq_agrees_with_join(a: Value, b: Value) -> None:
+    assert a.leq(b) == (a.join(b) == b)
+
+
+@LAWS
+@given(any_value)
+def test_leq_is_reflexive(a: Value) -> None:
+    assert a.leq(a)
+
+
+@LAWS
+@given(any_value, any_value)
+def test_leq_is_antisymmetric(a: Value, b: Value) -> None:
+    if a.leq(b) and b.leq(a):
+        assert a == b
+
+
+@LAWS
+@given(any_value, any_value, any_value)
+def test_leq_is_transitive(a: Value, b: Value, c: Value) -> None:
+    if a.leq(b) and b.leq(c):
+        assert a.leq(c)
+
+
+# -- bottom and top ----------------------------------------------------------------------------
+
+@LAWS
+@given(any_value)
+def test_bottom_is_the_identity_of_join(a: Value) -> None:
+    assert BOTTOM.join(a) == a == a.join(BOTTOM)
+    assert BOTTOM.leq(a)
+    assert a.leq(BOTTOM) == a.is_bottom
+
+
+@LAWS
+@given(any_value)
+def test_top_absorbs_join(a: Value) -> None:
+    assert TOP.join(a) == TOP == a.join(TOP)
+    assert a.leq(TOP)
+    assert TOP.leq(a) == a.is_top
+
+
+def test_top_and_bottom_are_distinct_and_recognised() -> None:
+    assert TOP != BOTTOM
+    assert TOP.is_top and not TOP.is_bottom
+    assert BOTTOM.is_bottom and not BOTTOM.is_top
+    assert atoms([]) == BOTTOM
+
+
+# -- the bounds that make chains finite --------------------------------------------------------
+
+@LAWS
+@given(st.lists(any_atom, max_size=30))
+def test_values_never_exceed_the_bounds(items: list) -> None:
+    value = atoms(items)
+    if not value.is_top:
+        assert len(value.atoms) <= MAX_ATOMS
+        assert _value_depth(value) <= MAX_DEPTH
+
+
+@LAWS
+@given(st.lists(any_atom, max_size=12))
+def test_atoms_do_not_depend_on_order(items: list) -> None:
+    forward, backward = atoms(items), atoms(list(reversed(items)))
+    assert forward == backward
+    assert hash(forward) == hash(backward)
+    assert repr(forward) == repr(backward)
+
+
+@LAWS
+@given(any_value, any_value)
+def test_equal_values_hash_alike(a: Value, b: Value) -> None:
+    if a == b:
+        assert hash(a) == hash(b)
+
+
+# -- widening ----------------------------------------------------------------------------------
+
+@LAWS
+@given(any_value, any_value)
+def test_widening_is_an_upper_bound_of_join(a: Value, b: Value) -> None:
+    assert a.join(b).leq(a.widen(b))
+    assert a.leq(a.widen(b))
+
+
+@LAWS
+@given(any_value, any_value)
+def test_widening_keeps_a_stable_value(a: Value, b: Value) -> None:
+    if b.leq(a):
+        assert a.widen(b) == a
+
+
+@LAWS
+@given(st.lists(any_value, min_size=1, max_size=40))
+def test_widened_chains_stabilise(sequence: list[Value]) -> None:
+    """Widening any sequence of values into a running approximation changes it at most once."""
+    current = sequence[0]
+    changes = 0
+    for value in sequence[1:]:
+        widened = current.widen(value)
+        assert current.leq(widened)
+        if widened != current:
+            changes += 1
+        current = widened
+    assert changes <= 1
+    for value in sequence:
+        assert current.widen(value) == current, "the limit is not a fixpoint"
+
+
+@LAWS
+@given(st.lists(any_value, min_size=1, max_size=40))
+def test_joined_chains_are_finite(sequence: list[Value]) -> None:
+    """Even without widening, an ascending chain built by join grows at most MAX_ATOMS + 1 times."""
+    current = BOTTOM
+    increases = 0
+    for value in sequence:
+        joined = current.join(value)
+        assert current.leq(joined)
+        if joined != current:
+            increases += 1
+        current = joined
+    assert increases <= MAX_ATOMS + 1
