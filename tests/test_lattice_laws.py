@@ -14,8 +14,9 @@ from functools import reduce
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, TOP, ClassAtom, Coll, Const, DictAtom,
-                                           Extern, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms, join_all)
+from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, TOP, ClassAtom,
+                                           Coll, Const, DictAtom, Extern, FuncAtom, ModuleAtom, Obj,
+                                           Seq, Value, atoms, join_all)
 
 LAWS = settings(max_examples=300, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
@@ -175,7 +176,8 @@ def test_top_and_bottom_are_distinct_and_recognised() -> None:
 def test_values_never_exceed_the_bounds(items: list) -> None:
     value = atoms(items)
     if not value.is_top:
-        assert len(value.atoms) <= MAX_ATOMS
+        assert sum(type(a) is Const for a in value.atoms) <= MAX_ATOMS
+        assert len(value.atoms) <= MAX_OBJECTS
         assert _value_depth(value) <= MAX_DEPTH
 
 

@@ -17,6 +17,10 @@ from typing import Iterable, Iterator, Union
 
 #: Bound on the number of atoms a value may hold before it widens to ⊤.
 MAX_ATOMS = 12
+#: Bound for values holding heap objects, functions and classes: those are finitely many
+#: (allocation sites × bounded contexts), so a larger set still keeps chains finite — and
+#: a launch description gets its twenty ``add_action`` calls.
+MAX_OBJECTS = 64
 #: Bound on nesting of containers (a tuple in a list in a dict …) before ⊤.
 MAX_DEPTH = 4
 
@@ -240,7 +244,8 @@ BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 
 
 def _bounded(items: frozenset, soft: bool = False) -> Value:
-    if len(items) > MAX_ATOMS:
+    if len(items) > MAX_ATOMS and (
+            len(items) > MAX_OBJECTS or sum(type(a) is Const for a in items) > MAX_ATOMS):
         return TOP
     return Value(items, soft)
 

@@ -35,8 +35,10 @@ _SOURCES = {
 _PKG_SHARE = {"launch_ros.substitutions.find_package.FindPackageShare",
               "ament_index_python.packages.get_package_share_directory"}
 #: Actions that start nothing and change no scope: skipped silently.
-_INERT = {"launch.actions.log_info.LogInfo",
-          "launch.actions.set_environment_variable.SetEnvironmentVariable"}
+#: Launch actions that start no node and change no name: skipped, the system stays complete.
+_INERT = frozenset({"LogInfo", "SetEnvironmentVariable", "AppendEnvironmentVariable",
+                    "UnsetEnvironmentVariable", "PrependEnvironmentVariable", "Shutdown",
+                    "SetROSLogDir", "EmitEvent"})
 
 
 def _site_location(site: str) -> Location:
@@ -139,7 +141,7 @@ class PythonFront:
         if short == "IncludeLaunchDescription":
             return [Include(at, self.source(self.field(obj, "launch_description_source")),
                             self.arguments(self.field(obj, "launch_arguments")), self.condition(obj))]
-        if kind in _INERT:
+        if short in _INERT and kind.split(".")[0] in ("launch", "launch_ros"):
             return []
         return [Unsupported(at, short or "an unknown launch entity")]
 
