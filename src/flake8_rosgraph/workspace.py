@@ -26,8 +26,9 @@ SKIP_DIRS = frozenset({
     ".venv", "venv", "node_modules", ".mypy_cache", ".pytest_cache", ".rosgraph-cache",
     "site-packages", ".eggs",
 })
-#: On Python 3.10, longer lines are not parsed (its parser may segfault on deep chains).
-MAX_LINE_PY310 = 100_000
+#: On Python 3.10, a line with more call/attribute/subscript links than this is not parsed
+#: (its parser may segfault on such chains instead of raising).
+MAX_CHAIN_PY310 = 20_000
 #: Files larger than this are not analysed (a generated file, not a node).
 MAX_FILE_BYTES = 4 * 1024 * 1024
 
@@ -75,6 +76,10 @@ def relative(path: Path, root: Path) -> str:
         return path.name
 
 
+def _chain_links(line: str) -> int:
+    return line.count("(") + line.count(".") + line.count("[")
+
+
 def read_module(path: Path, root: Path) -> Module | Diagnostic:
     rel = relative(path, root)
     try:
@@ -94,10 +99,12 @@ def read_module(path: Path, root: Path) -> Module | Diagnostic:
         text = data.decode(encoding)
     except (SyntaxError, LookupError, UnicodeDecodeError) as exc:
         return Diagnostic(rel, 1, f"cannot decode file: {exc}")
-    if sys.version_info < (3, 11) and any(len(line) > MAX_LINE_PY310 for line in text.splitlines()):
-        # CPython 3.10's parser can crash the interpreter (not raise) on such lines.
-        return Diagnostic(rel, 1, f"skipped: a line longer than {MAX_LINE_PY310:,} characters "
-                                  "is nested too deeply to parse safely on Python 3.10")
+    if sys.version_info < (3, 11):
+        for number, line in enumerate(text.splitlines(), 1):
+            if len(line) > MAX_CHAIN_PY310 and _chain_links(line) > MAX_CHAIN_PY310:
+                # CPython 3.10's parser can crash the interpreter (not raise) on such chains.
+                return Diagnostic(rel, number, "skipped: an expression chained too deeply to "
+                                               "parse safely on Python 3.10")
     try:
         tree = ast.parse(data, filename=rel)
     except SyntaxError as exc:
