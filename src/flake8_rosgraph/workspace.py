@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 import io
 import os
+import re
 import stat
 import sys
 import tokenize
@@ -76,6 +77,9 @@ def relative(path: Path, root: Path) -> str:
         return path.name
 
 
+_LINE_BREAKS = re.compile(r"\r\n|\r|\n")
+
+
 def _chain_links(line: str) -> int:
     return line.count("(") + line.count(".") + line.count("[")
 
@@ -112,7 +116,9 @@ def read_module(path: Path, root: Path) -> Module | Diagnostic:
     except (ValueError, RecursionError, MemoryError, OverflowError) as exc:
         return Diagnostic(rel, 1, f"cannot parse file: {type(exc).__name__}: {exc}"[:200])
     name, is_package = module_name(path, root if root.is_dir() else root.parent)
-    return Module(name, rel, tree, text.splitlines(), is_package)
+    wide = {} if text.isascii() else {  # numbered as Python's tokenizer numbers lines
+        number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
+    return Module(name, rel, tree, wide, is_package)
 
 
 def load_workspace(root: Path) -> Workspace:

@@ -19,7 +19,9 @@ class Module:
     name: str            # dotted module name ("pkg.sub.mod")
     path: str            # root-relative POSIX path
     tree: ast.Module
-    lines: list[str]     # source lines, for byte → character column conversion
+    #: The non-ASCII source lines by number: the only ones where ast's UTF-8 byte columns
+    #: differ from character columns (all lines would cost memory for nothing).
+    wide_lines: dict[int, str]
     is_package: bool = False
     cfg: CFG | None = None
     globals: frozenset[str] = frozenset()
@@ -27,10 +29,9 @@ class Module:
     def column(self, node: ast.AST) -> int:
         """1-based character column of ``node`` (ast's ``col_offset`` counts UTF-8 bytes)."""
         line, col = getattr(node, "lineno", 1), getattr(node, "col_offset", 0)
-        if 0 < line <= len(self.lines):
-            text = self.lines[line - 1]
-            if not text.isascii():
-                col = len(text.encode("utf-8")[:col].decode("utf-8", "replace"))
+        text = self.wide_lines.get(line)
+        if text is not None:
+            col = len(text.encode("utf-8")[:col].decode("utf-8", "replace"))
         return col + 1
 
 
