@@ -34,3 +34,9 @@ def test_softness_survives_join_and_orders_values():
     assert hard.join(soft).soft
     assert hard.leq(soft) and not soft.leq(hard)
     assert not soften(TOP).soft
+
+
+def test_signed_zero_and_nan_do_not_make_sets_order_dependent():
+    zero, minus_zero, nan = Const.of(0.0), Const.of(-0.0), Const.of(float("nan"))
+    assert atoms([zero, minus_zero]) == atoms([minus_zero, zero])
+    assert atoms([nan, Const.of(float("nan"))]) == atoms([nan])

@@ -27,6 +27,9 @@ MAX_DEPTH = 4
 ConstType = Union[str, int, float, bool, None, bytes, complex]
 
 
+_NAN = float("nan")
+
+
 @dataclass(frozen=True)
 class Const:
     """A Python literal. ``kind`` keeps ``1``, ``1.0`` and ``True`` apart (they hash alike)."""
@@ -36,6 +39,13 @@ class Const:
 
     @staticmethod
     def of(value: ConstType) -> "Const":
+        if type(value) is float:
+            # -0.0 == 0.0 and NaN != NaN would make sets of constants depend on the order
+            # values arrive in: one canonical zero, one canonical NaN.
+            if value != value:
+                value = _NAN
+            elif value == 0.0:
+                value = 0.0
         return Const(type(value).__name__, value)
 
 
