@@ -107,7 +107,7 @@ def read_module(path: Path, root: Path) -> Module | Diagnostic:
         for number, line in enumerate(text.splitlines(), 1):
             if len(line) > MAX_CHAIN_PY310 and _chain_links(line) > MAX_CHAIN_PY310:
                 # CPython 3.10's parser can crash the interpreter (not raise) on such chains.
-                return Diagnostic(rel, number, "skipped: an expression chained too deeply to "
+                return Diagnostic(rel, number, "skipped: an expression nested too deeply to "
                                                "parse safely on Python 3.10")
     try:
         tree = ast.parse(data, filename=rel)
