@@ -30,12 +30,21 @@ ConstType = Union[str, int, float, bool, None, bytes, complex]
 _NAN = float("nan")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Const:
     """A Python literal. ``kind`` keeps ``1``, ``1.0`` and ``True`` apart (they hash alike)."""
 
     kind: str
     value: ConstType
+
+    def __eq__(self, other: object) -> bool:
+        # Identity first, so the one canonical NaN equals itself on every Python version
+        # (3.13's generated __eq__ compares fields with == only).
+        return isinstance(other, Const) and self.kind == other.kind and (
+            self.value is other.value or self.value == other.value)
+
+    def __hash__(self) -> int:
+        return hash((self.kind, self.value))
 
     @staticmethod
     def of(value: ConstType) -> "Const":
