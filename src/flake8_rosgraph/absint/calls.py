@@ -280,8 +280,7 @@ class CallSemantics:
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,
-                frame.cls is None and frame.block not in frame.dominators,
-                frame.func.qualname if frame.func else "<module>")
+                frame.cls is None and frame.block not in frame.dominators)
         for store in model.stores:
             value = self.ref(store.value, bound, receiver)
             for key in self.format_keys(store.key, bound):

@@ -49,7 +49,6 @@ class Effect:
     line: int
     column: int
     conditional: bool
-    scope: str          # qualname of the function the call is in ("<module>" at top level)
 
     def arg(self, name: str) -> Value:
         for key, val in self.args:

@@ -196,9 +196,6 @@ class ExpressionSemantics:
             return fold(lambda s, i: s[i], [atoms([atom]), index])
         return TOP
 
-    def e_Slice(self, node: ast.Slice) -> Value:
-        return TOP
-
     def e_Starred(self, node: ast.Starred) -> Value:
         return self.eval(node.value)
 

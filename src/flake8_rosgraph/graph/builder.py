@@ -11,11 +11,10 @@ possibilities yields one entity per possibility.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from typing import Any, Iterable
 
 from ..absint.engine import Analysis, Effect
-from ..absint.values import (BoundMethod, Const, Extern, ExternBound, FuncAtom, Obj, Record, Seq,
+from ..absint.values import (BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record, Seq,
                              Coll, Value)
 from . import names
 from .model import Entity, Location, RosGraph, RosNode
@@ -120,18 +119,12 @@ def _choices(value: Value) -> list[str | None]:
     return list(strings) if strings else [None]
 
 
-@dataclass
-class _NodeSite:
-    node: RosNode
-    allow_undeclared: bool
-
-
 class GraphBuilder:
     def __init__(self, analysis: Analysis) -> None:
         self.analysis = analysis
         self.program = analysis.program
-        self.nodes: dict[tuple, _NodeSite] = {}
-        self.by_object: dict[str, list[_NodeSite]] = {}
+        self.nodes: dict[tuple, RosNode] = {}          # (location, name, namespace) -> node
+        self.by_object: dict[str, list[RosNode]] = {}  # allocation site -> nodes it may be
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
@@ -140,15 +133,15 @@ class GraphBuilder:
                 self._add_node(eff)
         entities: dict[int, dict[tuple, Entity]] = {}
         for eff in effects:
-            for site in self._owners(eff):
-                bucket = entities.setdefault(id(site.node), {})
-                for entity in self._entities(eff, site.node):
+            for node in self._owners(eff):
+                bucket = entities.setdefault(id(node), {})
+                for entity in self._entities(eff, node):
                     bucket.setdefault(_entity_order(entity), entity)
         graph = RosGraph()
-        for site in self.nodes.values():
-            bucket = entities.get(id(site.node), {})
-            site.node.entities = [bucket[k] for k in sorted(bucket)]
-            graph.nodes.append(site.node)
+        for node in self.nodes.values():
+            bucket = entities.get(id(node), {})
+            node.entities = [bucket[k] for k in sorted(bucket)]
+            graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
         return graph
 
@@ -162,30 +155,29 @@ class GraphBuilder:
         else:
             ns_choices = [None if ns is None else names.normalize_namespace(ns)
                           for ns in _choices(namespaces)]
-        allow = eff.arg("allow_undeclared").consts() != [False]
         for obj in eff.arg("target"):
             if not isinstance(obj, Obj):
                 continue
             for name in _choices(eff.arg("name")):
                 for ns in ns_choices:
                     key = (location, name, ns)
-                    site = self.nodes.get(key)
-                    if site is None:
-                        node = RosNode(name, ns, location, _class_name(self.program, obj),
-                                       conditional=eff.conditional,
-                                       invalid=_node_problem(name, ns))
-                        site = self.nodes[key] = _NodeSite(node, allow)
-                    sites = self.by_object.setdefault(obj.site, [])
-                    if site not in sites:
-                        sites.append(site)
+                    node = self.nodes.get(key)
+                    if node is None:
+                        node = self.nodes[key] = RosNode(
+                            name, ns, location, _class_name(self.program, obj),
+                            conditional=eff.conditional, invalid=_node_problem(name, ns))
+                    known = self.by_object.setdefault(obj.site, [])
+                    if all(n is not node for n in known):
+                        known.append(node)
 
-    def _owners(self, eff: Effect) -> list[_NodeSite]:
+    def _owners(self, eff: Effect) -> list[RosNode]:
         if eff.kind == "node":
             return []
-        out: list[_NodeSite] = []
+        out: list[RosNode] = []
         for obj in eff.arg("node"):
             if isinstance(obj, Obj):
-                out.extend(s for s in self.by_object.get(obj.site, ()) if s not in out)
+                out.extend(n for n in self.by_object.get(obj.site, ())
+                           if all(n is not o for o in out))
         return out
 
     # -- entities ---------------------------------------------------------------------------
@@ -266,7 +258,6 @@ class GraphBuilder:
 
 
 def _class_name(program, obj: Obj) -> str | None:
-    from ..absint.values import ClassAtom
     if isinstance(obj.cls, ClassAtom):
         return program.classes[obj.cls.cid].qualname
     return None
