@@ -31,13 +31,6 @@ class InvalidName(Rule):
     trailing `/`, `~` only at the start and followed by `/`, balanced `{}`
     substitutions, and the length limits.
 
-    ## Why is this bad?
-    rclpy raises at run time (`InvalidNodeNameException`,
-    `InvalidTopicNameException`, `InvalidServiceNameException`,
-    `InvalidParameterException`, ...) when the node or entity is created, so
-    the node crashes on start-up — often only in the configuration that builds
-    the bad name.
-
     Names built from the node's own namespace are evaluated in the namespace
     the node runs in: `self.get_namespace()` is the constructor's namespace,
     made absolute, and the root namespace `/` when nothing sets one — so
@@ -47,6 +40,13 @@ class InvalidName(Rule):
     (`f"{ns.rstrip('/')}/cmd"`, `ns if ns != '/' else ''`, a relative name
     `'cmd'`) stay quiet.
 
+    ## Why is this bad?
+    rclpy raises at run time (`InvalidNodeNameException`,
+    `InvalidTopicNameException`, `InvalidServiceNameException`,
+    `InvalidParameterException`, ...) when the node or entity is created, so
+    the node crashes on start-up — often only in the configuration that builds
+    the bad name.
+
     ## Known problems
     The check needs the name: a name the analysis cannot determine is not
     checked (see ROS010). Every possible value of a name is checked, so a
@@ -55,7 +55,10 @@ class InvalidName(Rule):
     node started that way in a namespace is still judged at the root. Under a
     launch file's namespace, only a name that starts with the root's `//`
     is rebuilt in that namespace; a namespace the launch file computes in a
-    way the analysis cannot follow makes such names unknown (not checked).
+    way the analysis cannot follow makes such names unknown (not checked). A
+    launch file that starts the node through an executable the analysis cannot
+    bind to its code (a name built from a launch argument) does not count: the
+    node is then judged at the root.
 
     ## Example
     ```python
