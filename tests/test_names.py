@@ -22,12 +22,14 @@ from flake8_rosgraph.graph.names import (
     TOPIC_MAX_NAME_LENGTH,
     NameCheck,
     RemapRule,
+    built_at_root,
     edit_distance,
     expand_topic_name,
     first_remap_match,
     fqn,
     is_hidden,
     normalize_namespace,
+    rebuild_in_namespace,
     validate_full_topic_name,
     validate_namespace,
     validate_node_name,
@@ -406,3 +408,29 @@ def test_edit_distance_properties(a, b, limit):
     assert distance == edit_distance(b, a, limit)
     assert (distance == 0) == (a == b)
     assert distance == min(levenshtein(a, b), limit + 1)
+
+
+# --- names built from the node's namespace -----------------------------------------------
+@pytest.mark.parametrize(("raw", "namespace", "built"), [
+    ("//cmd", "/", True),          # get_namespace() + '/cmd' in the root namespace
+    ("/cmd", "/", False),          # absolute, written or built safely
+    ("cmd", "/", False),
+    ("//cmd", "/robot1", False),   # not what the namespace gives there
+    ("//cmd", None, False),
+    (None, "/", False),
+])
+def test_built_at_root(raw, namespace, built):
+    assert built_at_root(raw, namespace) is built
+
+
+@pytest.mark.parametrize(("raw", "code_ns", "launch_ns", "rebuilt"), [
+    ("//cmd", "/", "/robot1", "/robot1/cmd"),
+    ("//cmd", "/", "/fleet/robot1", "/fleet/robot1/cmd"),
+    ("//cmd", "/", "/", "//cmd"),              # still the root: still broken
+    ("//cmd", "/", None, None),                # the launch namespace is unknown
+    ("/cmd", "/", "/robot1", "/cmd"),          # absolute names stay
+    ("cmd", "/", "/robot1", "cmd"),            # relative ones are expanded later anyway
+    ("/robot1/cmd", "/robot1", "/robot2", "/robot1/cmd"),
+])
+def test_rebuild_in_namespace(raw, code_ns, launch_ns, rebuilt):
+    assert rebuild_in_namespace(raw, code_ns, launch_ns) == rebuilt

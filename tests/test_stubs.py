@@ -33,8 +33,8 @@ SHIPPED_NAMES = [name for name, _ in SHIPPED]
 #: The arguments the graph builder reads, per effect kind (docs/stubs.md, "Effects").
 EFFECT_ARGS: dict[str, frozenset[str]] = {
     "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare"}),
-    "publisher": frozenset({"node", "topic", "type", "qos", "via"}),
-    "subscription": frozenset({"node", "topic", "type", "qos", "callback", "via"}),
+    "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
+    "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
     "client": frozenset({"node", "name", "type", "via"}),
     "action_server": frozenset({"node", "name", "type", "callback", "via"}),
@@ -59,6 +59,11 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "launch_description": frozenset(),
 }
 
+#: rmw_qos_profile_default without its depth: what rclpy makes of a plain depth.
+DEPTH_PROFILE = {"history": "keep_last", "reliability": "reliable", "durability": "volatile",
+                 "liveliness": "system_default", "deadline": 0, "lifespan": 0,
+                 "liveliness_lease_duration": 0}
+
 
 # =========================================================================================
 # shipped models
@@ -78,7 +83,7 @@ def _ref_problems(ref: Ref, params: set[str], where: str, allow_return: bool) ->
     names = params | ({"@return"} if allow_return else set())
     if ref.how == "arg" and ref.data not in names:
         return [f"{where}: no parameter {ref.data!r}"]
-    if ref.how == "format":
+    if ref.how in ("format", "constant"):
         return [f"{where}: no parameter {p!r}" for p in sorted(_template_params(ref.data) - params)]
     if ref.how == "load":
         missing = sorted((_template_params(ref.data) | {ref.on}) - names)
@@ -149,6 +154,23 @@ def test_shipped_stub_effects_and_references_are_consistent(name):
     library = load_library([(name, dict(SHIPPED)[name])])
     problems = [p for model in _models(library) for p in _model_problems(model)]
     assert problems == []
+
+
+def _constant_refs(model: FunctionModel) -> Iterator[str]:
+    refs = [ref for effect in model.effects for _, ref in effect.args]
+    refs += [store.value for store in model.stores] + [ref for _, ref in model.returns.fields]
+    if model.returns.how == "ref":
+        refs.append(model.returns.data)
+    yield from (ref.data for ref in refs if ref.how == "constant")
+
+
+def test_every_shipped_constant_reference_names_a_modelled_constant():
+    library = load_library(SHIPPED)
+    missing = [name for model in _models(library) for name in _constant_refs(model)
+               if not _template_params(name) and library.canonical(name) not in library.constants]
+    assert missing == []
+    presets = [name for name in library.aliases if name.startswith("rclpy.qos.QoSPresetProfiles.")]
+    assert presets and all(library.canonical(p) in library.constants for p in presets)
 
 
 def test_effect_vocabulary_covers_every_entity_kind_the_builder_knows():
@@ -441,8 +463,9 @@ def test_message_filters_subscribers_are_subscriptions_with_no_callback():
         ("/stereo_sync", "/camera/image_raw", "sensor_msgs/msg/Image", MFS),
     ]
     assert [e.callback for _, e in graph.entities("subscriptions")] == [None, None]
-    assert entity(graph, "subscriptions", "/stereo_sync", "/camera/image_raw").qos == {"depth": 10}
-    assert entity(graph, "subscriptions", "/stereo_sync", "/camera/camera_info").qos == {"depth": 5}
+    # A depth is rclpy's QoSProfile(depth=N): the default profile with that depth.
+    assert entity(graph, "subscriptions", "/stereo_sync", "/camera/image_raw").qos == dict(DEPTH_PROFILE, depth=10)
+    assert entity(graph, "subscriptions", "/stereo_sync", "/camera/camera_info").qos == dict(DEPTH_PROFILE, depth=5)
 
 
 def test_message_filters_registered_callbacks_are_analysed_and_get_topic_is_followed():
@@ -532,7 +555,7 @@ def test_basic_navigator_is_a_node_with_the_nav2_clients_in_its_namespace():
     amcl = entity(graph, "subscriptions", fqn, "/robot1/amcl_pose")
     assert (amcl.type, amcl.via, amcl.qos["durability"]) == (
         "geometry_msgs/msg/PoseWithCovarianceStamped", NAV, "transient_local")
-    assert entity(graph, "publishers", fqn, "/robot1/initialpose").qos == {"depth": 10}
+    assert entity(graph, "publishers", fqn, "/robot1/initialpose").qos == dict(DEPTH_PROFILE, depth=10)
 
 
 def test_basic_navigator_subclass_keeps_the_navigator_entities_and_adds_its_own():

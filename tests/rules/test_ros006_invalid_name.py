@@ -31,3 +31,19 @@ def test_invalid_parameter_and_service_names():
 
 def test_valid_names_are_quiet():
     assert codes(graph(node("cam", pub("/camera/image")), node("viewer"))) == []
+
+
+def test_a_name_built_from_the_root_namespace_says_so():
+    teleop = node("teleop", pub(None, raw_name="//cmd_vel", invalid="contains '//'"))
+    assert messages(graph(teleop)) == [
+        "ROS006 rcl rejects topic name '//cmd_vel': contains '//' (built from the node's namespace, "
+        "which is the root namespace '/' when nothing sets one: ns + '/x' gives '//x')"]
+    launched = node("driver", pub(None, raw_name="//cmd_vel", invalid="contains '//'"))
+    launched.launch = {"file": "rover/launch/sim.launch.py", "line": 7}
+    assert "as rover/launch/sim.launch.py starts it" in messages(graph(launched))[0]
+
+
+def test_a_doubled_slash_elsewhere_is_not_blamed_on_the_namespace():
+    g = graph(node("cam", pub(None, raw_name="camera//image", invalid="contains '//'"),
+                   namespace="/robot1"))
+    assert messages(g) == ["ROS006 rcl rejects topic name 'camera//image': contains '//'"]

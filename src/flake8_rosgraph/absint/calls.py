@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ast
 import itertools
+import posixpath
 import string
 from dataclasses import dataclass
 
@@ -220,8 +221,12 @@ class CallSemantics:
             return self.apply_model(fn, None, args, node)
         if qualname in self.lib.classes:
             if self.lib.class_flag(qualname, "record"):
-                # A record holds its constructor's arguments by name (``self`` excluded).
+                # A record holds its constructor's arguments by name (``self`` excluded),
+                # unless the constructor model says which fields it computes (``returns``):
+                # then an attribute the class derives is not mistaken for a raw argument.
                 init = self.lib.method(qualname, "__init__")
+                if init is not None and init.returns.how == "record":
+                    return self.apply_model(init, Const.of(None), args, node)
                 bound = self.bind_model(init, Const.of(None), args) if init else {}
                 bound.pop("self", None)
                 return atoms([Record(qualname, tuple(sorted(bound.items())))])
@@ -312,7 +317,9 @@ class CallSemantics:
             return soften(bound.get(ref.data, TOP))
         if ref.how == "format":
             keys = self.format_keys(ref.data, bound)
-            return atoms(Const.of(k) for k in keys) if keys else TOP
+            return _soft_like(ref.data, bound, atoms(Const.of(k) for k in keys)) if keys else TOP
+        if ref.how == "constant":
+            return self.named_constant(ref.data, bound)
         if ref.how == "field":
             if isinstance(receiver, Record):
                 return receiver.field(ref.data) or TOP
@@ -331,6 +338,19 @@ class CallSemantics:
                     out = out.join(TOP if value.is_bottom else value)
             return out if not out.is_bottom else TOP
         return TOP
+
+    def named_constant(self, template: str, bound: dict) -> Value:
+        """The library constants named by every expansion of ``template`` (unknown if one is
+        not modelled).  Soft when an argument it is built from is: a lookup by an
+        overridable name is itself only a default."""
+        keys = self.format_keys(template, bound)
+        out = BOTTOM
+        for key in keys:
+            found = self.lib.constants.get(self.lib.canonical(key))
+            if found is None:
+                return TOP
+            out = out.join(found)
+        return TOP if out.is_bottom else _soft_like(template, bound, out)
 
     def format_keys(self, template: str, bound: dict) -> list[str]:
         """All expansions of a key template over constant arguments.
@@ -459,8 +479,30 @@ def _argparse_dest(value: Value) -> list[str] | None:
     return out or None
 
 
+def _soft_like(template: str, bound: dict, value: Value) -> Value:
+    """``value``, soft when an argument the template is built from is: a name built from an
+    overridable default is itself only a default."""
+    used = {f[1].partition("|")[0] for f in string.Formatter().parse(template) if f[1]}
+    return soften(value) if any(bound.get(p, TOP).soft for p in used) else value
+
+
+def _upper(value: Value) -> list[str] | None:
+    """``str.upper`` of every possible string."""
+    strings = value.strings()
+    return [s.upper() for s in strings] if strings else None
+
+
+def _rooted(value: Value) -> list[str] | None:
+    """Every possible string as an absolute POSIX path, ``None`` or ``""`` being the root:
+    ``posixpath.join("/", value or "")``."""
+    consts = value.consts()
+    if not consts or not all(c is None or isinstance(c, str) for c in consts):
+        return None
+    return sorted({posixpath.join("/", c or "") for c in consts})
+
+
 #: Filters usable in library-model key templates (``{param|filter}``).
-KEY_FILTERS = {"argparse_dest": _argparse_dest}
+KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted}
 
 
 @dataclass(frozen=True)

@@ -244,10 +244,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
         elif isinstance(target, ast.Attribute):
             holder = self.eval(target.value)
             self.store_attr(holder, target.attr, value)
-            if isinstance(target.value, ast.Name) and any(isinstance(a, Record) for a in holder):
+            if isinstance(target.value, (ast.Name, ast.Attribute)) \
+                    and any(isinstance(a, Record) for a in holder):
                 # Records (library value objects such as a QoS profile) are updated in place
-                # through the variable that holds them.
-                self.store_name(target.value.id, _with_field(holder, target.attr, value))
+                # through the variable or attribute (``self.qos.depth = 5``) that holds them.
+                self.assign(target.value, _with_field(holder, target.attr, value))
         elif isinstance(target, ast.Subscript):
             self.eval(target.value)
             self.eval(target.slice)

@@ -92,8 +92,8 @@ class Ref:
     ``how`` is "arg" (a parameter by name; "@return" is the call's result), "overridable"
     (a parameter whose value is only a default the environment may replace), "const"
     (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
-    stored earlier on the object in parameter ``on`` under ``key``) or "field" (a
-    field of the receiver record).
+    stored earlier on the object in parameter ``on`` under ``key``), "field" (a
+    field of the receiver record) or "constant" (the library constant a template names).
     """
 
     how: str
@@ -118,9 +118,11 @@ def _ref(raw: Any, where: str) -> Ref:
             return Ref("load", raw["load"], str(raw["on"]))
         if keys == {"field"} and isinstance(raw["field"], str):
             return Ref("field", raw["field"])
+        if keys == {"constant"} and isinstance(raw["constant"], str):
+            return Ref("constant", raw["constant"])
     raise StubError(f"{where}: expected a parameter name or one of {{arg=…}}, "
                     f"{{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, "
-                    f"{{field=…}}; got {raw!r}")
+                    f"{{field=…}}, {{constant=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)

@@ -14,8 +14,8 @@ import re
 from typing import Any, Iterable
 
 from ..absint.engine import Analysis, Effect
-from ..absint.values import (BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record, Seq,
-                             Coll, Value)
+from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
+                             Seq, Coll, Value)
 from . import names
 from .model import Entity, Location, RosGraph, RosNode
 
@@ -52,7 +52,10 @@ def interface_type(value: Value) -> str | None:
 
 
 def _policy(value: Value | None) -> str | None:
-    if value is None:
+    """A QoS policy as its lower-case name (``ReliabilityPolicy.BEST_EFFORT``, the deprecated
+    ``RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT``, ``"best_effort"``); ``None`` when unknown,
+    ambiguous, or only an overridable default (a parameter may change it)."""
+    if value is None or value.is_top or value.soft:
         return None
     out = set()
     for atom in value:
@@ -67,21 +70,31 @@ def _policy(value: Value | None) -> str | None:
 
 
 def _number(value: Value | None) -> float | int | None:
-    consts = value.consts() if value is not None else None
+    consts = value.consts() if value is not None and not value.soft else None
     if not consts or len(consts) != 1 or isinstance(consts[0], bool) \
             or not isinstance(consts[0], (int, float)):
         return None
     return consts[0]
 
 
-def qos_of(value: Value) -> dict[str, Any] | None:
-    """A QoS argument as a dict of the policies known statically (``None``: nothing known)."""
-    atoms_ = list(value)
-    if value.is_top or len(atoms_) != 1:
-        return None
-    atom = atoms_[0]
+def _seconds(value: Value | None) -> float | int | None:
+    """A duration in seconds: a number, or a duration record (``Duration(seconds=…,
+    nanoseconds=…)``, whose stub names the parts ``sec`` and ``nanosec``)."""
+    atoms_ = list(value) if value is not None and not value.is_top else []
+    if len(atoms_) == 1 and isinstance(atoms_[0], Record):
+        sec, nanosec = _number(atoms_[0].field("sec")), _number(atoms_[0].field("nanosec"))
+        return None if sec is None or nanosec is None else sec + nanosec / 1e9
+    return _number(value)
+
+
+def _profile(atom: Atom, depth_profile: Value | None) -> dict[str, Any] | None:
+    """One possible QoS argument as the policies known statically (``None``: not a profile)."""
     if isinstance(atom, Const) and isinstance(atom.value, int) and not isinstance(atom.value, bool):
-        return {"depth": atom.value}
+        # A plain depth: the library makes its default profile with that depth.
+        base = qos_of(depth_profile) if depth_profile is not None else None
+        out = {k: v for k, v in (base or {}).items() if k != "profile"}
+        out["depth"] = atom.value
+        return out
     if not isinstance(atom, Record):
         return None
     out: dict[str, Any] = {}
@@ -89,14 +102,34 @@ def qos_of(value: Value) -> dict[str, Any] | None:
         policy = _policy(atom.field(key))
         if policy is not None:
             out[key] = policy
-    for key in QOS_NUMBERS + QOS_DURATIONS:
+    for key in QOS_NUMBERS:
         number = _number(atom.field(key))
         if number is not None:
             out[key] = number
+    for key in QOS_DURATIONS:
+        seconds = _seconds(atom.field(key))
+        if seconds is not None:
+            out[key] = seconds
     profile = atom.field("profile")
     if profile is not None and profile.strings() and len(profile.strings()) == 1:
         out["profile"] = profile.strings()[0]
     return out
+
+
+def qos_of(value: Value, depth_profile: Value | None = None) -> dict[str, Any] | None:
+    """A QoS argument as a dict of the policies known statically (``None``: nothing known).
+
+    A plain depth is ``depth_profile`` (the profile the library makes of a depth) with
+    that depth.  With several possible profiles, a policy is known when all agree on it.
+    An overridable default (a profile chosen by a parameter) is not known.
+    """
+    if value.is_top or value.is_bottom or value.soft:
+        return None
+    profiles = [_profile(atom, depth_profile) for atom in sorted(value, key=repr)]
+    if any(p is None for p in profiles):
+        return None
+    first, *rest = profiles
+    return {k: v for k, v in first.items() if all(p.get(k) == v for p in rest)}
 
 
 def json_value(value: Value) -> Any:
@@ -187,7 +220,8 @@ class GraphBuilder:
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
             type_ = interface_type(eff.arg("type"))
-            qos = qos_of(eff.arg("qos")) if kind in ("publishers", "subscriptions") else None
+            qos = qos_of(eff.arg("qos"), dict(eff.args).get("qos_for_depth")) \
+                if kind in ("publishers", "subscriptions") else None
             callback = self.callback_name(eff.arg("callback")) if "callback" in dict(eff.args) \
                 else None
             via = eff.arg("via").strings()

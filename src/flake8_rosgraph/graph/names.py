@@ -202,6 +202,28 @@ def normalize_namespace(ns: str | None) -> str:
     return ns if ns.startswith("/") else "/" + ns
 
 
+def built_at_root(raw: str | None, namespace: str | None) -> bool:
+    """Whether a name as written looks built from the node's namespace in the root namespace.
+
+    ``self.get_namespace() + '/cmd'`` is ``"//cmd"`` when the node runs in ``"/"``
+    (the default), which rcl rejects, and ``"/robot1/cmd"`` in ``"/robot1"``. The
+    code only says the name starts with the namespace's ``"/"`` and then its own.
+    """
+    return namespace == "/" and raw is not None and raw.startswith("//")
+
+
+def rebuild_in_namespace(raw: str | None, code_namespace: str | None,
+                         namespace: str | None) -> str | None:
+    """A name the code built from its root namespace (:func:`built_at_root`), as the same code
+    builds it when the node is started in ``namespace`` instead (a launch file's): the root's
+    ``"/"`` is replaced by that namespace; ``None`` when that namespace is unknown. Other names
+    are returned as they are.
+    """
+    if not built_at_root(raw, code_namespace) or namespace == code_namespace:
+        return raw
+    return None if namespace is None else namespace + raw[1:]
+
+
 def fqn(node_name: str, namespace: str) -> str:
     """The fully qualified node name, formatted as ``rcl_node_init`` does (no doubled ``/`` under the root)."""
     return namespace + node_name if namespace.endswith("/") else namespace + "/" + node_name

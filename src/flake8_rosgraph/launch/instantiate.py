@@ -92,6 +92,9 @@ class Instantiator:
             if entity.kind not in NAMED_KINDS:
                 entities.append(entity)
                 continue
+            raw = names.rebuild_in_namespace(entity.raw_name, code.namespace, namespace)
+            if raw != entity.raw_name:  # built from the namespace, which the launch file sets
+                entity = replace(entity, raw_name=raw, name=None, invalid=None)
             resolved, problem, hit = self.resolve(entity, name, namespace, rules)
             if hit is not None:
                 hits.add(hit)

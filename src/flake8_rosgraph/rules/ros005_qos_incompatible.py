@@ -14,7 +14,7 @@ class QosIncompatible(Rule):
     """## What it does
     Checks every publisher / subscription pair of a topic for QoS policies the
     middleware refuses to match — exactly the *error* cases of rmw_dds_common's
-    `qos_profile_check_compatible`:
+    `qos_profile_check_compatible` (what rclpy's `qos_check_compatible` reports):
 
     - best-effort publisher, reliable subscription;
     - volatile publisher, transient-local subscription;
@@ -23,17 +23,35 @@ class QosIncompatible(Rule):
     - subscription with a liveliness lease duration, publisher without one, or
       with a longer one.
 
+    The QoS of each end is what rclpy would use: a plain depth (`10`) is
+    `QoSProfile(depth=10)` (reliable, volatile, keep-last, no deadline);
+    `QoSProfile(...)` fills what it is not given from the same defaults; the
+    presets (`qos_profile_sensor_data`, `qos_profile_system_default`,
+    `qos_profile_services_default`, `qos_profile_parameters`,
+    `qos_profile_parameter_events`, `qos_profile_action_status_default`,
+    `QoSPresetProfiles.SENSOR_DATA.value`,
+    `QoSPresetProfiles.get_from_short_key('sensor_data')`) have rmw's values;
+    deadlines and lease durations are read from `Duration(seconds=…,
+    nanoseconds=…)`. Profiles built in variables, helper functions (in other
+    modules too), class attributes and copies (`copy.copy(profile)`, then
+    `profile.reliability = …`) are followed.
+
     ## Why is this bad?
     The two endpoints never connect. At run time ROS 2 only fires an
     "incompatible QoS" event (a log line, if anybody listens); the subscription
-    just receives nothing. A classic case is subscribing reliably to a sensor
-    driver that publishes with `qos_profile_sensor_data` (best effort).
+    just receives nothing. A classic case is subscribing reliably — with a plain
+    depth — to a sensor driver that publishes with `qos_profile_sensor_data`
+    (best effort).
 
     ## Known problems
-    Only policies the analysis determined are compared: a policy left out of
-    the extracted QoS (unknown, or left at its default) never causes a
-    finding, so a volatile publisher created with a plain depth (`10`) is not
-    compared with a transient-local subscription. The finding is at the
+    Only policies the analysis determined are compared: a profile or policy
+    chosen by a parameter or a command-line option (an overridable default),
+    one the analysis cannot follow, or that differs between the possible
+    profiles of one call is unknown and never causes a finding. The
+    middleware's *warnings* (a system-default or best-available policy on
+    either side) are not findings either. A field changed on a profile held in
+    an object attribute (`self.qos.reliability = …`) makes that policy unknown,
+    since the attribute keeps both profiles. The finding is at the
     subscription, which requests more than the publisher offers; the publisher
     is the related location.
 

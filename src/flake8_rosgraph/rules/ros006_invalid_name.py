@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from typing import Iterator
 
+from ..graph import names
 from ..graph.model import RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .vocabulary import NAME_NOUN
@@ -15,6 +16,13 @@ def _node_label(node: RosNode) -> str:
     return node.name or node.namespace or "?"
 
 
+def _where_root(node: RosNode) -> str:
+    """Who leaves the node in the root namespace: the launch file that starts it, or nobody."""
+    if node.launch is not None:
+        return f" as {node.launch.get('file')} starts it"
+    return " when nothing sets one"
+
+
 class InvalidName(Rule):
     """## What it does
     Checks node names, namespaces, and topic, service, action and parameter
@@ -22,6 +30,15 @@ class InvalidName(Rule):
     (`[A-Za-z0-9_]` and `/`), no leading digit in a component, no `//`, no
     trailing `/`, `~` only at the start and followed by `/`, balanced `{}`
     substitutions, and the length limits.
+
+    Names built from the node's own namespace are evaluated in the namespace
+    the node runs in: `self.get_namespace()` is the constructor's namespace,
+    made absolute, and the root namespace `/` when nothing sets one — so
+    `self.get_namespace() + '/cmd'` is `//cmd`, which rcl rejects. A node that
+    launch files start is judged in each launch file's namespace, and the
+    message says which one leaves it at the root. The safe spellings
+    (`f"{ns.rstrip('/')}/cmd"`, `ns if ns != '/' else ''`, a relative name
+    `'cmd'`) stay quiet.
 
     ## Why is this bad?
     rclpy raises at run time (`InvalidNodeNameException`,
@@ -33,18 +50,28 @@ class InvalidName(Rule):
     ## Known problems
     The check needs the name: a name the analysis cannot determine is not
     checked (see ROS010). Every possible value of a name is checked, so a
-    name that is invalid only on one branch is reported too.
+    name that is invalid only on one branch is reported too. A namespace
+    passed with `--ros-args -r __ns:=…` outside launch files is not seen: a
+    node started that way in a namespace is still judged at the root. Under a
+    launch file's namespace, only a name that starts with the root's `//`
+    is rebuilt in that namespace; a namespace the launch file computes in a
+    way the analysis cannot follow makes such names unknown (not checked). A
+    launch file that starts the node through an executable the analysis cannot
+    bind to its code (a name built from a launch argument) does not count: the
+    node is then judged at the root.
 
     ## Example
     ```python
     super().__init__('2nd-camera')
     self.create_publisher(Image, 'camera//image', 10)
+    self.create_publisher(Twist, self.get_namespace() + '/cmd_vel', 10)  # '//cmd_vel' at the root
     ```
 
     ## Use instead
     ```python
     super().__init__('second_camera')
     self.create_publisher(Image, 'camera/image', 10)
+    self.create_publisher(Twist, 'cmd_vel', 10)  # relative: expanded in the node's namespace
     ```
 
     ## Options
@@ -65,4 +92,7 @@ class InvalidName(Rule):
                 if entity.invalid:
                     shown = entity.raw_name if entity.raw_name is not None else entity.name
                     message = f"rcl rejects {NAME_NOUN[entity.kind]} name '{shown}': {entity.invalid}"
+                    if names.built_at_root(entity.raw_name, node.namespace):
+                        message += (" (built from the node's namespace, which is the root namespace '/'"
+                                    f"{_where_root(node)}: ns + '/x' gives '//x')")
                     yield Finding(entity.location, self.code, message)
