@@ -90,6 +90,8 @@ class _Parser:
 
 
 def _build(name: str, args: list[Subst]) -> Subst:
+    if name == "var" and len(args) == 1 and isinstance(args[0], Unknown):
+        return args[0]  # the inner reason (e.g. nesting too deep) says more than "not evaluated"
     if name == "var" and len(args) == 1 and isinstance(args[0], Text):
         return Var(args[0].text)
     if name == "find-pkg-share" and len(args) == 1:

@@ -114,7 +114,16 @@ def _xml_texts(text: str) -> dict[str, str]:
     return {k: v.strip() for k, v in out.items()}
 
 
-def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
+def _unread(path: Path, root: Path, exc: Exception, notes: list[Diagnostic]) -> None:
+    """Note a package file that could not be read (the package's executables become unknown)."""
+    reason = "not UTF-8" if isinstance(exc, UnicodeDecodeError) else \
+        (exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc))
+    notes.append(Diagnostic(_rel(path, root), 1, f"not read, the package's executables are unknown: {reason}"))
+
+
+def read_package(xml_path: Path, root: Path, notes: list[Diagnostic] | None = None) -> Package | Diagnostic:
+    """The package of ``xml_path``; files it cannot read are added to ``notes``."""
+    notes = [] if notes is None else notes
     rel = _rel(xml_path, root)
     try:
         fields = _xml_texts(read_text(xml_path, root))
@@ -131,7 +140,7 @@ def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
         "ament_python" if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file()
         else "ament_cmake")
     package = Package(fields["name"], _rel(folder, root), build_type)
-    scripts = _console_scripts(folder, root)
+    scripts = _console_scripts(folder, root, notes)
     if scripts is None:
         package.complete = False
     else:
@@ -139,7 +148,7 @@ def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
             package.executables.setdefault(exe.name, exe)
     cmake = folder / "CMakeLists.txt"
     if cmake.exists():
-        if not _cmake_executables(cmake, folder, root, package):
+        if not _cmake_executables(cmake, folder, root, package, notes):
             package.complete = False
     elif build_type != "ament_python":
         package.complete = False  # a compiled package whose build file we cannot see
@@ -155,7 +164,7 @@ def _entry(spec: str) -> Executable | None:
     return Executable(name.strip(), module.strip(), function.strip().split()[0] if function.strip() else None)
 
 
-def _console_scripts(folder: Path, root: Path) -> list[Executable] | None:
+def _console_scripts(folder: Path, root: Path, notes: list[Diagnostic]) -> list[Executable] | None:
     """Entry points from setup.cfg and setup.py; ``None`` when setup.py hides them from static reading."""
     out: list[Executable] = []
     cfg = folder / "setup.cfg"
@@ -164,12 +173,15 @@ def _console_scripts(folder: Path, root: Path) -> list[Executable] | None:
         try:
             parser.read_string(read_text(cfg, root))
             raw = parser.get("options.entry_points", "console_scripts", fallback="")
-        except (configparser.Error, OSError, UnicodeDecodeError):
+        except (OSError, UnicodeDecodeError) as exc:
+            _unread(cfg, root, exc, notes)
+            return None
+        except configparser.Error:
             return None
         out.extend(e for e in map(_entry, raw.splitlines()) if e is not None)
     setup = folder / "setup.py"
     if setup.exists():
-        found = _setup_py_scripts(setup, root)
+        found = _setup_py_scripts(setup, root, notes)
         if found is None:
             return None
         out.extend(found)
@@ -236,12 +248,18 @@ def _bounded(text: str) -> object:
     return text if len(text) <= MAX_STR else _UNKNOWN
 
 
-def _setup_py_scripts(path: Path, root: Path) -> list[Executable] | None:
+def _setup_py_scripts(path: Path, root: Path, notes: list[Diagnostic]) -> list[Executable] | None:
     """The ``console_scripts`` of ``setup.py``; ``None`` when not statically readable (or too big/deep)."""
     try:
         tree = ast.parse(read_bytes(path, root), filename=str(path))
         return _setup_call_scripts(tree)
-    except (SyntaxError, ValueError, OSError, RecursionError, MemoryError, OverflowError):
+    except OSError as exc:
+        _unread(path, root, exc, notes)
+        return None
+    except (RecursionError, MemoryError, OverflowError) as exc:
+        _unread(path, root, ValueError(f"too deeply nested to read ({type(exc).__name__})"), notes)
+        return None
+    except (SyntaxError, ValueError):
         return None
 
 
@@ -380,11 +398,13 @@ def cmake_commands(text: str) -> list[tuple[str, list[str]]]:
     return commands
 
 
-def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package) -> bool:
+def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
+                       notes: list[Diagnostic]) -> bool:
     """Add the CMake targets and installed scripts; false when a name is not literal."""
     try:
         commands = cmake_commands(read_text(cmake, root))
-    except (OSError, UnicodeDecodeError):
+    except (OSError, UnicodeDecodeError) as exc:
+        _unread(cmake, root, exc, notes)
         return False
     complete = True
     for name, args in commands:
@@ -419,7 +439,7 @@ def find_packages(root: Path) -> PackageIndex:
         return index
     for xml_path in package_xml_files(root, index.diagnostics):
         try:
-            result = read_package(xml_path, root)
+            result = read_package(xml_path, root, index.diagnostics)
         except Exception as exc:  # one package's failure costs that package only
             result = Diagnostic(_rel(xml_path, root), 1,
                                 f"package not read: internal error: {type(exc).__name__}: {exc}"[:300])
