@@ -17,6 +17,7 @@ from .absint.program import Program
 from .escaping import escape_text
 from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph
+from .safe_io import read_text
 from .workspace import load_workspace
 
 
@@ -33,7 +34,7 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     diagnostics: list[Diagnostic] = []
     for path in stub_files:
         try:
-            texts.append((str(path), Path(path).read_text(encoding="utf-8")))
+            texts.append((str(path), read_text(Path(path), None)))  # no FIFO, device or huge file
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.append(Diagnostic(str(path), 1, f"cannot read stub file: {exc}", "error"))
     library = load_library(texts)

@@ -10,16 +10,19 @@ later run on unchanged code) reads that file.
   sources and built-in stubs), the extra stub files' contents, the options that
   change findings (external topics) and the path and content hash of every
   workspace file the analysis may read (``.py`` plus ROS metadata: package.xml,
-  setup.cfg, launch/parameter files). Any change gives a new key, so a stale
-  entry is never read; old entries are pruned.
+  setup.cfg, CMakeLists.txt, launch/parameter files, ``COLCON_IGNORE`` markers),
+  read with the readers' own rules (:mod:`.safe_io`). Any change gives a new key,
+  so a stale entry is never read; old entries are pruned.
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
   temporary file and renamed into place, so readers never see half a file.
-* **Robustness**: an unreadable, corrupt or foreign entry is ignored and
-  rebuilt; an unwritable cache directory only costs the sharing (each process
-  then analyses on its own). The cache holds plain JSON, never pickles, so a
-  tampered cache cannot run code.
+* **Trust**: entries are signed with a per-user secret (:func:`machine_secret`),
+  so an entry committed to the repository or written elsewhere is ignored; the
+  cache only writes into, and prunes, a folder it owns (:func:`_own_dir`), only
+  its own files, never through a link. An unreadable, corrupt or foreign entry
+  is rebuilt; an unusable cache folder only costs the sharing (each process then
+  analyses on its own). The cache holds plain JSON, never pickles.
 """
 from __future__ import annotations
 
