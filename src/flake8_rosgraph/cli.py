@@ -15,7 +15,7 @@ from pathlib import Path
 
 from . import __version__, check_cli
 from .escaping import escape_text, json_safe
-from .options import TRUE_WORDS as _TRUE
+from .options import TRUE_WORDS
 
 
 def _graph(args: argparse.Namespace) -> int:
@@ -102,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except Exception as exc:  # one clear line; the traceback only when asked for
-        if getattr(args, "debug", False) or os.environ.get("ROSGRAPH_DEBUG", "").strip().lower() in _TRUE:
+        if getattr(args, "debug", False) or os.environ.get("ROSGRAPH_DEBUG", "").strip().lower() in TRUE_WORDS:
             traceback.print_exc()
         if isinstance(exc, check_cli.UserError):
             print(escape_text(f"flake8-rosgraph: error: {exc}"), file=sys.stderr)

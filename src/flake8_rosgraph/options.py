@@ -50,7 +50,7 @@ ENV_VARS: dict[str, str] = {
     "cache_dir": "ROSGRAPH_CACHE_DIR",
     "debug": "ROSGRAPH_DEBUG",
 }
-TRUE_WORDS = _TRUE = frozenset({"1", "true", "yes", "on"})
+TRUE_WORDS = frozenset({"1", "true", "yes", "on"})
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ class Settings:
             external_topics=tuple(_names(pick("external_topics"))),
             sarif=_path(pick("sarif")),
             cache_dir=_path(pick("cache_dir")),
-            debug=bool(given.get("debug")) or environ.get(ENV_VARS["debug"], "").strip().lower() in _TRUE,
+            debug=bool(given.get("debug")) or environ.get(ENV_VARS["debug"], "").strip().lower() in TRUE_WORDS,
         )
 
     @classmethod

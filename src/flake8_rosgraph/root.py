@@ -98,7 +98,7 @@ def find_package_dir(path: Path) -> Path | None:
 
 def _protected() -> set[Path]:
     """Folders never taken as a fallback root: filesystem roots and the home directory."""
-    protected = {Path(Path.cwd().anchor), Path(os.path.abspath(os.sep))}
+    protected = {Path(os.path.abspath(os.sep))}
     try:
         protected.add(Path(os.path.abspath(Path.home())))
     except RuntimeError:  # no home directory to protect

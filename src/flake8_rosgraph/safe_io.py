@@ -98,6 +98,15 @@ def read_text(path: Path, root: Path | None, limit: int = MAX_DATA_BYTES) -> str
     return read_bytes(path, root, limit).decode("utf-8")
 
 
+def describe(exc: Exception) -> str:
+    """A short reason for a read failure, for a diagnostic (never the file's content)."""
+    if isinstance(exc, UnicodeDecodeError):
+        return "not UTF-8"
+    if isinstance(exc, OSError) and exc.strerror:
+        return exc.strerror
+    return str(exc)
+
+
 def is_regular_file(path: Path) -> bool:
     """Whether ``path`` is a regular file, without following a final link into a special file."""
     try:

@@ -284,3 +284,47 @@ def main():
     checked = check(ws)
     checked.assert_launch_survived()
     assert sum(1 for f in checked.report["findings"] if f["code"] == "ROS003") == 200
+
+
+# -- folders that cannot be listed ---------------------------------------------------------------
+
+@pytest.mark.parametrize("folder", [f"{CHAT}/config", f"{CHAT}/launch", "src/drive_pkg"])
+def test_unlistable_folder_is_a_diagnostic(ws: Path, folder: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A folder that cannot be listed (no permission; simulated, since tests may run as root) is named,
+    and costs only what is inside it."""
+    from flake8_rosgraph.analysis import build_graph
+
+    _write(ws, f"{CHAT}/launch/other.launch.xml", '<launch>\n  <node pkg="chat_pkg" exec="lisener"/>\n</launch>\n')
+    blocked = os.path.abspath(ws / folder)
+    real_scandir = os.scandir
+
+    def scandir(path=".", *args, **kwargs):
+        if os.path.abspath(os.fspath(path)) == blocked:
+            raise PermissionError(13, "Permission denied", os.fspath(path))
+        return real_scandir(path, *args, **kwargs)
+
+    monkeypatch.setattr(os, "scandir", scandir)
+    graph = build_graph(ws)
+    named = [d for d in graph.diagnostics if d.path == folder]
+    assert any("folder not read" in d.message and "Permission denied" in d.message for d in named), \
+        graph.diagnostics
+    files = {s.launch_file for s in graph.systems}
+    if folder.endswith("launch"):
+        assert not files
+    else:
+        assert {f"{CHAT}/launch/bringup.launch.xml", f"{CHAT}/launch/other.launch.xml"} <= files
+        assert not any("internal error" in d.message for d in graph.diagnostics)
+
+
+@posix_only
+def test_flake8_on_one_file_beside_a_fifo_manifest(ws: Path) -> None:
+    """The FIFO is in another package; flake8 checks one unrelated file and must not block on it."""
+    from .harness import flake8_executable, run
+    from .metadata_workspace import TIGHT_GUARD_S, TIGHT_MEMORY
+
+    (ws / "src" / "fifo_pkg").mkdir()
+    os.mkfifo(ws / "src" / "fifo_pkg" / "package.xml")
+    os.mkfifo(ws / CHAT / "launch" / "pipe.launch.xml")
+    done = run([flake8_executable(), "--isolated", "--select", "ROS", str(ws / CHAT / "chat_pkg" / "talker.py")],
+               ws, memory_cap=TIGHT_MEMORY, hang_guard=TIGHT_GUARD_S)
+    assert done is not None and done.returncode == 0 and "Traceback" not in done.stderr, done and done.explain()

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from ..absint.engine import Analysis
 from ..graph.model import Diagnostic
-from ..safe_io import is_within, read_text
+from ..safe_io import describe, is_within, read_text
 from ..workspace import SKIP_DIRS
 from .actions import Action
 from .python_front import ENTRY_FUNCTION, read_python_launch
@@ -36,7 +36,7 @@ def _looks_like_launch(path: Path, root: Path, diagnostics: list[Diagnostic]) ->
     try:
         text = read_text(path, root)
     except (OSError, UnicodeDecodeError) as exc:
-        diagnostics.append(Diagnostic(rel, 1, f"launch file candidate not read: {_reason(exc)}"))
+        diagnostics.append(Diagnostic(rel, 1, f"launch file candidate not read: {describe(exc)}"))
         return False
     if path.suffix == ".xml":
         try:
@@ -47,14 +47,6 @@ def _looks_like_launch(path: Path, root: Path, diagnostics: list[Diagnostic]) ->
                                               f"launch file not read: XML error: {exc}"))
             return False
     return any(line.rstrip() == "launch:" for line in text.splitlines())
-
-
-def _reason(exc: Exception) -> str:
-    if isinstance(exc, UnicodeDecodeError):
-        return "not UTF-8"
-    if isinstance(exc, OSError) and exc.strerror:
-        return exc.strerror
-    return str(exc)
 
 
 def frontend_launch_files(root: Path, diagnostics: list[Diagnostic] | None = None) -> list[str]:
@@ -102,7 +94,7 @@ class LaunchReader:
         try:
             text = read_text(self.root / path, self.root)
         except (OSError, UnicodeDecodeError) as exc:
-            return [], f"cannot read: {_reason(exc)}"
+            return [], f"cannot read: {describe(exc)}"
         try:
             if path.endswith(".xml"):
                 return read_xml_launch(path, text), None

@@ -26,7 +26,7 @@ from pathlib import Path
 
 from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
-from ..safe_io import is_regular_file, is_within, read_bytes, read_text
+from ..safe_io import describe, is_regular_file, is_within, read_bytes, read_text
 from ..workspace import SKIP_DIRS
 from .xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
 
@@ -116,9 +116,8 @@ def _xml_texts(text: str) -> dict[str, str]:
 
 def _unread(path: Path, root: Path, exc: Exception, notes: list[Diagnostic]) -> None:
     """Note a package file that could not be read (the package's executables become unknown)."""
-    reason = "not UTF-8" if isinstance(exc, UnicodeDecodeError) else \
-        (exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc))
-    notes.append(Diagnostic(_rel(path, root), 1, f"not read, the package's executables are unknown: {reason}"))
+    notes.append(Diagnostic(_rel(path, root), 1,
+                            f"not read, the package's executables are unknown: {describe(exc)}"))
 
 
 def read_package(xml_path: Path, root: Path, notes: list[Diagnostic] | None = None) -> Package | Diagnostic:
@@ -127,10 +126,8 @@ def read_package(xml_path: Path, root: Path, notes: list[Diagnostic] | None = No
     rel = _rel(xml_path, root)
     try:
         fields = _xml_texts(read_text(xml_path, root))
-    except UnicodeDecodeError:
-        return Diagnostic(rel, 1, "package.xml not read: not UTF-8")
-    except OSError as exc:
-        return Diagnostic(rel, 1, f"package.xml not read: {exc.strerror or exc}")
+    except (OSError, UnicodeDecodeError) as exc:
+        return Diagnostic(rel, 1, f"package.xml not read: {describe(exc)}")
     except (xml.parsers.expat.ExpatError, XmlRefused) as exc:
         return Diagnostic(rel, getattr(exc, "lineno", 1) or 1, f"package.xml not read: {exc}")
     if not fields.get("name"):
