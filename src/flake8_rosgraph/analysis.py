@@ -80,6 +80,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
                                               f"(at {Path(where.filename).name}:{where.lineno})",
                                       "error"))
         graph = RosGraph()
+    # Paths and messages quote the analysed workspace: escaped, so that they print safely.
     graph.diagnostics = sorted({Diagnostic(escape_text(d.path), d.line, escape_text(d.message), d.severity)
                                 for d in diagnostics})
     return graph

@@ -38,7 +38,8 @@ SKIP_DIRS = frozenset({
     "site-packages", ".eggs",
 })
 
-_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0) \
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
+_FLAGS = os.O_RDONLY | _NONBLOCK | getattr(os, "O_NOFOLLOW", 0) \
     | getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
@@ -76,7 +77,7 @@ def read_bytes(path: Path, root: Path | None, limit: int = MAX_DATA_BYTES) -> by
             raise UnsafeFile("not read: not a regular file (a pipe, device or folder)")
         if info.st_size > limit:
             raise UnsafeFile(f"not read: larger than the {_mib(limit)} limit")
-        if hasattr(os, "set_blocking"):
+        if _NONBLOCK:  # a regular file: plain blocking reads from here on
             os.set_blocking(fd, True)
         chunks: list[bytes] = []
         size = 0

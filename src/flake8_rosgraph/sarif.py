@@ -227,7 +227,8 @@ def _fingerprint(artifacts: _Artifacts, problem: Problem, occurrence: int) -> st
 def _message(problem: Problem) -> om.Message:
     text = _escape(escape_text(problem.message))
     if problem.related:
-        links = ", ".join(f"[{_escape(escape_text(label))}]({index})" for index, (_, label) in enumerate(problem.related, 1))
+        links = ", ".join(f"[{_escape(escape_text(label))}]({index})"
+                          for index, (_, label) in enumerate(problem.related, 1))
         text += f" Related: {links}."
     return om.Message(text=text)
 

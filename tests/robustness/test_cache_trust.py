@@ -179,7 +179,8 @@ def test_every_read_file_is_in_the_key(ws: Path, rel: str) -> None:
 
 def test_cmake_change_is_seen_through_the_cache(ws: Path) -> None:
     """Fixing a missing executable in CMakeLists.txt clears the ROS201 on the next cached run."""
-    (ws / CHAT / "launch" / "drive.launch.xml").write_text('<launch>\n  <node pkg="drive_pkg" exec="odom"/>\n</launch>\n')
+    (ws / CHAT / "launch" / "drive.launch.xml").write_text(
+        '<launch>\n  <node pkg="drive_pkg" exec="odom"/>\n</launch>\n')
     assert ("ROS201", f"{CHAT}/launch/drive.launch.xml", 2) in codes(cache.load_or_build(ws, SETTINGS))
     cmake = ws / "src" / "drive_pkg" / "CMakeLists.txt"
     cmake.write_text(cmake.read_text() + "add_executable(odom src/odom.cpp)\n")
