@@ -14,8 +14,10 @@ from typing import Sequence
 from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
+from .escaping import escape_text
 from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph
+from .safe_io import read_text
 from .workspace import load_workspace
 
 
@@ -32,7 +34,7 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     diagnostics: list[Diagnostic] = []
     for path in stub_files:
         try:
-            texts.append((str(path), Path(path).read_text(encoding="utf-8")))
+            texts.append((str(path), read_text(Path(path), None)))  # no FIFO, device or huge file
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.append(Diagnostic(str(path), 1, f"cannot read stub file: {exc}", "error"))
     library = load_library(texts)
@@ -46,7 +48,9 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
     """The workspace's launch systems; a failure here must not cost the code-level graph."""
     from .launch.api import systems_for
     try:
-        return systems_for(root if root.is_dir() else root.parent, graph, analysis)
+        if not root.is_dir():  # one file given: its Python launch description, nothing around it walked
+            return systems_for(root.parent, graph, analysis, diagnostics, walk=False)
+        return systems_for(root, graph, analysis, diagnostics)
     except Exception as exc:
         diagnostics.append(Diagnostic("", 0, f"launch files not analysed: internal error: "
                                               f"{type(exc).__name__}: {exc}", "error"))
@@ -76,5 +80,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
                                               f"(at {Path(where.filename).name}:{where.lineno})",
                                       "error"))
         graph = RosGraph()
-    graph.diagnostics = sorted(set(diagnostics))
+    # Paths and messages quote the analysed workspace: escaped, so that they print safely.
+    graph.diagnostics = sorted({Diagnostic(escape_text(d.path), d.line, escape_text(d.message), d.severity)
+                                for d in diagnostics})
     return graph

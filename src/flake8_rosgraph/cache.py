@@ -10,23 +10,29 @@ later run on unchanged code) reads that file.
   sources and built-in stubs), the extra stub files' contents, the options that
   change findings (external topics) and the path and content hash of every
   workspace file the analysis may read (``.py`` plus ROS metadata: package.xml,
-  setup.cfg, launch/parameter files). Any change gives a new key, so a stale
-  entry is never read; old entries are pruned.
+  setup.cfg, CMakeLists.txt, launch/parameter files, ``COLCON_IGNORE`` markers),
+  read with the readers' own rules (:mod:`.safe_io`). Any change gives a new key,
+  so a stale entry is never read; old entries are pruned.
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
   temporary file and renamed into place, so readers never see half a file.
-* **Robustness**: an unreadable, corrupt or foreign entry is ignored and
-  rebuilt; an unwritable cache directory only costs the sharing (each process
-  then analyses on its own). The cache holds plain JSON, never pickles, so a
-  tampered cache cannot run code.
+* **Trust**: entries are signed with a per-user secret (:func:`machine_secret`),
+  so an entry committed to the repository or written elsewhere is ignored; the
+  cache only writes into, and prunes, a folder it owns (:func:`_own_dir`), only
+  its own files, never through a link. An unreadable, corrupt or foreign entry
+  is rebuilt; an unusable cache folder only costs the sharing (each process then
+  analyses on its own). The cache holds plain JSON, never pickles.
 """
 from __future__ import annotations
 
 import contextlib
 import hashlib
+import hmac
 import json
 import os
+import re
+import secrets
 import stat
 import sys
 import tempfile
@@ -37,24 +43,32 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from . import __version__
+from .escaping import escape_text
 from .graph.model import Diagnostic, Location
 from .options import Settings
+from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
 from .findings import Finding, RuleConfig
 
 CACHE_DIR_NAME = ".rosgraph-cache"
 #: Version of the entry layout below; bump it when the layout changes.
-ENTRY_FORMAT = 1
+ENTRY_FORMAT = 2
 #: How long a process waits for another one's analysis before doing its own.
 LOCK_TIMEOUT_S = 600.0
 #: How many entries (distinct keys) to keep per cache directory.
 KEEP_ENTRIES = 16
+#: Largest entry written or read: with :data:`KEEP_ENTRIES`, what the cache may take on disk.
+MAX_ENTRY_BYTES = 16 * 1024 * 1024
 
-#: Directories that never hold workspace sources.
-_SKIP_DIRS = frozenset({"__pycache__", "node_modules"})
-#: Files in a directory that tell ROS tools to skip it.
-_IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+#: The only files the cache ever deletes: its entries, their locks, its own unfinished writes.
+_OWN_FILE = re.compile(r"^(?:[0-9a-f]{64}\.(?:json|lock)|\.tmp-[A-Za-z0-9_]+\.json)$")
+#: Written into a cache folder this tool created (or found empty); its presence marks the folder as ours.
+OWNER_MARKER = "CACHEDIR.TAG"
+_OWNER_TEXT = "Signature: 8a477f597d28d172789f06886806bc55\n# flake8-rosgraph analysis cache\n"
+_MARKERS = {".gitignore": "# created by flake8-rosgraph\n*\n", "COLCON_IGNORE": "", OWNER_MARKER: _OWNER_TEXT}
 #: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files).
 _INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch"})
+#: Files read (or whose presence matters) whatever their suffix.
+_INPUT_NAMES = frozenset({"CMakeLists.txt", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 
 
 @dataclass(frozen=True)
@@ -69,27 +83,48 @@ class WorkspaceReport:
 # -- the key -------------------------------------------------------------------------------------
 
 def _sha256_file(path: Path) -> str:
-    """Content hash of a regular file; FIFOs and devices (which never end) hash as such."""
-    info = path.stat()
-    if not stat.S_ISREG(info.st_mode):
-        return f"special:{stat.S_IFMT(info.st_mode)}"
-    digest = hashlib.sha256()
-    with path.open("rb") as handle:
-        for block in iter(lambda: handle.read(1 << 16), b""):
-            digest.update(block)
-    return digest.hexdigest()
+    """Content hash of one of the tool's own files (trusted, regular)."""
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _input_digest(path: Path, root: Path | None) -> str:
+    """What the key records of an input file: its content hash, or why the analysis does not read it.
+
+    Computed with the readers' own rules (:mod:`.safe_io`), so a FIFO, a device,
+    a link out of the workspace or a huge file is never read here either.
+    """
+    try:
+        return hashlib.sha256(read_bytes(path, root, MAX_SOURCE_BYTES)).hexdigest()
+    except UnsafeFile as exc:
+        try:
+            info = os.lstat(path)
+            return f"refused:{exc}:{info.st_size}:{info.st_mtime_ns}"
+        except OSError:
+            return f"refused:{exc}"
+    except OSError as exc:
+        return f"unreadable:{exc.errno}"
+
+
+def _encoded(text: str) -> bytes:
+    """Key material; file names that are not UTF-8 (surrogate escapes) are encoded as the OS gives them."""
+    return text.encode("utf-8", "surrogateescape")
 
 
 def workspace_inputs(root: Path) -> list[Path]:
-    """The workspace files the key covers, sorted by POSIX path relative to ``root``."""
+    """The workspace files the key covers, sorted by POSIX path relative to ``root``.
+
+    Every folder any reader enters is walked (only version-control data, build
+    products and hidden folders are skipped by all of them), so each file the
+    analysis may read is covered; a lone-file root covers that file.
+    """
+    if not root.is_dir():
+        return [root] if root.exists() else []
     found: list[Path] = []
     for directory, dirnames, filenames in os.walk(root):
-        if directory != str(root) and any(m in filenames for m in _IGNORE_MARKERS + ("pyvenv.cfg",)):
-            dirnames[:] = []
-            continue
-        dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in _SKIP_DIRS]
-        found += [Path(directory, name) for name in filenames if Path(name).suffix in _INPUT_SUFFIXES]
-    return sorted(found, key=lambda p: p.relative_to(root).as_posix())
+        dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS]
+        found += [Path(directory, name) for name in filenames
+                  if Path(name).suffix in _INPUT_SUFFIXES or name in _INPUT_NAMES]
+    return sorted(found, key=lambda p: _encoded(p.relative_to(root).as_posix()))
 
 
 @lru_cache(maxsize=1)
@@ -109,16 +144,12 @@ def cache_key(root: Path, settings: Settings) -> str:
     """The key of the analysis of ``root`` under ``settings`` (see module docstring)."""
     digest = hashlib.sha256(f"rosgraph-cache/{ENTRY_FORMAT}\0{tool_fingerprint()}".encode())
     for stub in settings.stub_files:
-        content = _sha256_file(stub) if stub.is_file() else "missing"
-        digest.update(f"\0stub\0{stub.resolve().as_posix()}\0{content}".encode())
+        digest.update(_encoded(f"\0stub\0{stub.resolve().as_posix()}\0{_input_digest(stub, None)}"))
     for name in settings.external_topics:
-        digest.update(f"\0external\0{name}".encode())
+        digest.update(_encoded(f"\0external\0{name}"))
+    base = root if root.is_dir() else root.parent
     for path in workspace_inputs(root):
-        try:
-            content = _sha256_file(path)
-        except OSError:
-            content = "unreadable"
-        digest.update(f"\0file\0{path.relative_to(root).as_posix()}\0{content}".encode())
+        digest.update(_encoded(f"\0file\0{path.relative_to(base).as_posix()}\0{_input_digest(path, root)}"))
     return digest.hexdigest()
 
 
@@ -174,53 +205,179 @@ def report_from_obj(obj: Any, root: Path, key: str) -> WorkspaceReport:
     return WorkspaceReport(root, findings, diagnostics)
 
 
-def _read_entry(entry: Path, root: Path, key: str) -> WorkspaceReport | None:
+# -- trust: a per-machine secret signs every entry ------------------------------------------------
+
+def _key_file() -> Path:
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base, "flake8-rosgraph", "key")
+
+
+def _read_secret(path: Path) -> bytes:
+    """The secret at ``path``: a regular file of ours, private, not a link (``OSError`` otherwise)."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
     try:
-        return report_from_obj(json.loads(entry.read_text(encoding="utf-8")), root, key)
+        info = os.fstat(fd)
+        ours = not hasattr(os, "getuid") or info.st_uid == os.getuid()
+        private = os.name == "nt" or not info.st_mode & 0o077
+        if not (stat.S_ISREG(info.st_mode) and ours and private):
+            raise OSError(f"{path} is not a private file of this user")
+        data = os.read(fd, 4096).strip()
+    finally:
+        os.close(fd)
+    if len(data) < 32:
+        raise OSError(f"{path} holds no usable key")
+    return data
+
+
+@lru_cache(maxsize=1)
+def machine_secret() -> bytes | None:
+    """This user's cache-signing secret (``~/.cache/flake8-rosgraph/key``, created 0600); ``None`` if unavailable.
+
+    Entries are signed with it, so an entry committed to a repository or written
+    by another user or machine is never trusted: its signature cannot be forged
+    without the secret, and without a secret no entry is read or written at all.
+    """
+    path = _key_file()
+    try:
+        return _read_secret(path)
+    except FileNotFoundError:
+        pass
+    except OSError:
+        return None
+    try:
+        path.parent.mkdir(mode=0o700, parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=".key-", dir=path.parent)  # created 0600
+        try:
+            os.write(fd, secrets.token_hex(32).encode())
+            os.close(fd)
+            try:
+                os.link(tmp, path)  # never replaces a secret another process created meanwhile
+            except FileExistsError:
+                pass
+        finally:
+            os.unlink(tmp)
+        return _read_secret(path)
+    except OSError:
+        return None
+
+
+def _signature(secret: bytes, obj: dict[str, Any]) -> str:
+    """HMAC of an entry's canonical JSON (everything but the signature itself)."""
+    canonical = json.dumps({k: v for k, v in obj.items() if k != "signature"}, sort_keys=True,
+                           separators=(",", ":"), ensure_ascii=True)
+    return hmac.new(secret, canonical.encode("ascii"), hashlib.sha256).hexdigest()
+
+
+# -- the cache folder: only ever one this tool owns -----------------------------------------------
+
+def _own_dir(cache_dir: Path) -> bool:
+    """Create ``cache_dir`` or adopt it when empty; true only for a real folder marked as this tool's.
+
+    A folder someone else made (``--cache-dir .``, ``--cache-dir ~/src``) is never
+    written into: the markers (``.gitignore``: ``*``, ``COLCON_IGNORE``) would hide
+    the user's files from git and colcon, and pruning would delete theirs.
+    """
+    try:
+        info = os.lstat(cache_dir)
+    except FileNotFoundError:
+        try:
+            cache_dir.parent.mkdir(parents=True, exist_ok=True)
+            cache_dir.mkdir()
+        except FileExistsError:
+            pass
+        except OSError:
+            return False
+        try:
+            info = os.lstat(cache_dir)
+        except OSError:
+            return False
+    except OSError:
+        return False
+    if not stat.S_ISDIR(info.st_mode):  # a link (maybe dangling) or a file: not ours
+        return False
+    marker = cache_dir / OWNER_MARKER
+    try:
+        if read_bytes(marker, cache_dir, 4096).decode("utf-8", "replace") == _OWNER_TEXT:
+            return True
+    except OSError:
+        pass
+    try:
+        if any(os.scandir(cache_dir)):
+            return False
+    except OSError:
+        return False
+    try:
+        for name, content in _MARKERS.items():
+            _create_new(cache_dir / name, content.encode())
+    except OSError:
+        return False
+    return True
+
+
+def _create_new(path: Path, content: bytes) -> None:
+    """Write a new file; fails rather than follow a link or overwrite anything already there."""
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0), 0o644)
+    try:
+        os.write(fd, content)
+    finally:
+        os.close(fd)
+
+
+def _read_entry(entry: Path, root: Path, key: str, secret: bytes) -> WorkspaceReport | None:
+    try:
+        obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
+        signature = obj.get("signature") if isinstance(obj, dict) else None
+        if not isinstance(signature, str) or not hmac.compare_digest(signature, _signature(secret, obj)):
+            return None  # not written by this user on this machine: untrusted
+        return report_from_obj(obj, root, key)
     except (OSError, ValueError, KeyError, TypeError, RecursionError):
         return None  # unreadable, corrupt or hostile: rebuilt
 
 
-def _write_entry(entry: Path, report: WorkspaceReport, key: str) -> None:
-    text = json.dumps(report_to_obj(report, key), indent=1, sort_keys=True)
+def _write_entry(entry: Path, report: WorkspaceReport, key: str, secret: bytes) -> None:
+    obj = report_to_obj(report, key)
+    obj["signature"] = _signature(secret, obj)
+    text = json.dumps(obj, indent=1, sort_keys=True, ensure_ascii=True)
+    if len(text) > MAX_ENTRY_BYTES:
+        return  # kept in memory only: the cache stays bounded on disk
     fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".json", dir=entry.parent)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+        with os.fdopen(fd, "w", encoding="ascii") as handle:
             handle.write(text)
         os.chmod(tmp, 0o644)  # mkstemp makes it private; the workspace's other users share the cache
-        os.replace(tmp, entry)
+        os.replace(tmp, entry)  # replaces a link at ``entry`` itself, never writes through it
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
         raise
 
 
-def _prepare_dir(cache_dir: Path) -> None:
-    """Create the cache directory, marked so that git, colcon and backup tools leave it alone."""
-    cache_dir.mkdir(parents=True, exist_ok=True)
-    markers = {
-        ".gitignore": "# created by flake8-rosgraph\n*\n",
-        "COLCON_IGNORE": "",
-        "CACHEDIR.TAG": "Signature: 8a477f597d28d172789f06886806bc55\n# flake8-rosgraph analysis cache\n",
-    }
-    for name, content in markers.items():
-        marker = cache_dir / name
-        if not marker.exists():
-            marker.write_text(content, encoding="utf-8")
-
-
 def _prune(cache_dir: Path) -> None:
-    entries = sorted(cache_dir.glob("*.json"), key=lambda p: (p.stat().st_mtime, p.name), reverse=True)
-    for stale in entries[KEEP_ENTRIES:]:
-        with contextlib.suppress(OSError):
-            stale.unlink()
-            stale.with_suffix(".lock").unlink()
+    """Keep the newest :data:`KEEP_ENTRIES` entries; only ever touches files named like the cache's own."""
+    now = time.time()
+    entries: list[tuple[float, str]] = []
+    for item in os.scandir(cache_dir):
+        if not _OWN_FILE.match(item.name) or not item.is_file(follow_symlinks=False):
+            continue
+        mtime = item.stat(follow_symlinks=False).st_mtime
+        if item.name.startswith(".tmp-"):
+            if now - mtime > 3600:  # left by a process that died while writing
+                with contextlib.suppress(OSError):
+                    os.unlink(item.path)
+        elif item.name.endswith(".json"):
+            entries.append((mtime, item.name))
+    for _, name in sorted(entries, reverse=True)[KEEP_ENTRIES:]:
+        for stale in (name, name[:-len(".json")] + ".lock"):
+            with contextlib.suppress(OSError):
+                os.unlink(cache_dir / stale)
 
 
 @contextlib.contextmanager
 def exclusive_lock(lock_path: Path, timeout: float = LOCK_TIMEOUT_S) -> Iterator[bool]:
     """Hold an exclusive lock on ``lock_path``; yields ``False`` if it could not be had in time."""
-    handle = open(lock_path, "a+b")
+    fd = os.open(lock_path, os.O_RDWR | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0)
+                 | getattr(os, "O_NONBLOCK", 0), 0o644)
+    handle = os.fdopen(fd, "r+b")
     try:
         deadline = time.monotonic() + timeout
         delay = 0.01
@@ -280,33 +437,45 @@ def build_report(root: Path, settings: Settings) -> WorkspaceReport:
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
                          select=[rule.code for rule in RULES])
-    return WorkspaceReport(root, tuple(sorted(set(findings))), tuple(sorted(set(graph.diagnostics))))
+    # Messages quote names from the analysed code: escaped here, so every front end prints them safely.
+    safe = {Finding(f.location, f.code, escape_text(f.message),
+                    tuple((loc, escape_text(label)) for loc, label in f.related)) for f in findings}
+    return WorkspaceReport(root, tuple(sorted(safe)), tuple(sorted(set(graph.diagnostics))))
 
 
 def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
-    """The report for ``root``: from the cache when a valid entry exists, else built and stored."""
+    """The report for ``root``: from the cache when a valid entry exists, else built and stored.
+
+    The disk cache is used only with this user's signing secret and in a folder
+    the tool owns (see :func:`_own_dir`); otherwise each run analyses afresh,
+    which is slower but never wrong.
+    """
     root = Path(os.path.abspath(root))
+    secret = machine_secret()
+    cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
+    if secret is None or cache_dir is None:
+        return build_report(root, settings)
     key = cache_key(root, settings)
-    cache_dir = settings.cache_dir or root / CACHE_DIR_NAME
-    entry = cache_dir / f"{key}.json"
-    cached = _read_entry(entry, root, key)
+    entry = Path(os.path.abspath(cache_dir)) / f"{key}.json"
+    cached = _read_entry(entry, root, key, secret)
     if cached is not None:
         return cached
     with contextlib.ExitStack() as stack:
-        try:
-            _prepare_dir(cache_dir)
-            locked = stack.enter_context(exclusive_lock(entry.with_suffix(".lock")))
-        except OSError:  # read-only workspace: no sharing, still correct
-            locked = False
+        locked = False
+        if _own_dir(entry.parent):
+            try:
+                locked = stack.enter_context(exclusive_lock(entry.with_suffix(".lock")))
+            except OSError:  # read-only workspace: no sharing, still correct
+                locked = False
         if locked:  # whoever held the lock before us may have stored the entry meanwhile
-            cached = _read_entry(entry, root, key)
+            cached = _read_entry(entry, root, key, secret)
             if cached is not None:
                 return cached
         report = build_report(root, settings)
         if locked:
             with contextlib.suppress(OSError):
-                _write_entry(entry, report, key)
-                _prune(cache_dir)
+                _write_entry(entry, report, key, secret)
+                _prune(entry.parent)
         return report
 
 

@@ -21,9 +21,11 @@ from pathlib import Path
 from typing import Any
 
 from .cache import workspace_report
+from .escaping import escape_text, json_safe
 from .graph.model import Diagnostic
-from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings
+from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, root_problem
 from .root import discover_root, find_vcs_root
+from .safe_io import MAX_SOURCE_BYTES, read_text
 from .findings import Finding
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
@@ -60,7 +62,7 @@ def _codes(value: str | None) -> list[str]:
 def _noqa_lines(path: Path) -> dict[int, str]:
     """Line → the text flake8 searches for ``# noqa`` (a multi-line string counts as one line)."""
     try:
-        source = path.read_text(encoding="utf-8")
+        source = read_text(path, None, MAX_SOURCE_BYTES)
     except (OSError, UnicodeDecodeError):
         return {}
     lines = source.splitlines(keepends=True)
@@ -108,6 +110,36 @@ class _Selection:
         return selected > ignored and self.codes(code)
 
 
+class UserError(Exception):
+    """A mistake in the command line or the environment: a one-line message, exit status 2."""
+
+
+def _unknown_codes(args: argparse.Namespace, rules: Any) -> list[str]:
+    """Entries of ``--select``/``--extend-select``/``--ignore`` that name no rule of this tool.
+
+    flake8 rejects a malformed code; here every code is one of ours, so an entry
+    that is not a prefix of any rule code (``ROS999``, ``ROS01X``) is a typo that
+    would silently select nothing.
+    """
+    codes = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
+    given = _codes(args.select) + _codes(args.extend_select) + _codes(args.ignore)
+    return sorted({c for c in given if not any(code.startswith(c) for code in codes)})
+
+
+def _check_root(settings: Settings, args: argparse.Namespace) -> None:
+    """A given root must be an existing folder holding the checked paths (``UserError`` otherwise)."""
+    problem = root_problem(settings.root, "--root", args)
+    if problem is not None:
+        raise UserError(problem)
+    if settings.root is None:
+        return
+    root = Path(os.path.abspath(settings.root))
+    paths: list[Path] = list(args.paths)
+    outside = [str(p) for p in paths if not _is_under(Path(os.path.abspath(p)), root)]
+    if outside:
+        raise UserError(f"{', '.join(outside)}: not inside the workspace root {settings.root}")
+
+
 def _settings(args: argparse.Namespace) -> Settings:
     given = {"root": args.root, "stubs": args.stubs, "external_topics": args.external_topics,
              "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug}
@@ -125,16 +157,17 @@ def _collect(settings: Settings, paths: list[Path], wanted: _Selection
     for target in (Path(os.path.abspath(p)) for p in paths):
         root = Path(os.path.abspath(settings.root)) if settings.root else discover_root(target)
         report = workspace_report(root, settings)
-        diagnostics.update((root, d) for d in report.diagnostics)
+        base = root if root.is_dir() else root.parent  # a lone file is its own root
+        diagnostics.update((base, d) for d in report.diagnostics)
         noqa: dict[Path, dict[int, str]] = {}
         for finding in report.findings:
-            path = root / finding.location.path
+            path = base / finding.location.path
             if not (_is_under(path, target) and wanted(finding.code)):
                 continue
             if path not in noqa:
                 noqa[path] = _noqa_lines(path)
             if not _noqa_suppresses(noqa[path].get(finding.location.line), finding.code):
-                findings.add((root, finding))
+                findings.add((base, finding))
     return (sorted(findings, key=lambda rf: (str(rf[0] / rf[1].location.path), rf[1])),
             sorted(diagnostics, key=lambda rd: (str(rd[0]), rd[1])))
 
@@ -162,7 +195,7 @@ def _json(findings: list[tuple[Path, Finding]], diagnostics: list[tuple[Path, Di
             for root, d in diagnostics
         ],
     }
-    return json.dumps(data, indent=2, ensure_ascii=False)
+    return json_safe(json.dumps(data, indent=2, ensure_ascii=False))
 
 
 def _write_sarif(target: Path, findings: list[tuple[Path, Finding]],
@@ -181,33 +214,46 @@ def run(args: argparse.Namespace) -> int:
     """Run the check; print findings; return the exit status."""
     settings = _settings(args)
     missing = [str(p) for p in args.paths if not p.exists()]
-    if missing:
-        print(f"flake8-rosgraph check: no such file or directory: {', '.join(missing)}", file=sys.stderr)
-        return EXIT_ERROR
     try:
+        if missing:
+            raise UserError(f"no such file or directory: {', '.join(missing)}")
         from .rules import RULES
 
+        unknown = _unknown_codes(args, RULES)
+        if unknown:
+            raise UserError(f"unknown rule code(s): {', '.join(unknown)} "
+                            f"(codes: {', '.join(rule.code for rule in RULES)})")
+        _check_root(settings, args)
         findings, diagnostics = _collect(settings, list(args.paths), _Selection(args, RULES))
         if settings.sarif is not None:
-            _write_sarif(settings.sarif, findings, diagnostics, Path(os.path.abspath(args.paths[0])))
+            try:
+                _write_sarif(settings.sarif, findings, diagnostics, Path(os.path.abspath(args.paths[0])))
+            except OSError as exc:
+                raise UserError(f"cannot write the SARIF file {settings.sarif}: {exc.strerror or exc}") from exc
+    except UserError as exc:
+        if settings.debug:
+            raise
+        print(escape_text(f"flake8-rosgraph check: error: {exc}"), file=sys.stderr)
+        return EXIT_ERROR
     except Exception as exc:
         if settings.debug:
             raise
-        print(f"flake8-rosgraph check: {INTERNAL_ERROR_CODE} internal error ({type(exc).__name__}: {exc}); "
-              "rerun with --debug for the traceback", file=sys.stderr)
+        print(escape_text(f"flake8-rosgraph check: {INTERNAL_ERROR_CODE} internal error "
+                          f"({type(exc).__name__}: {exc}); rerun with --debug for the traceback"),
+              file=sys.stderr)
         return EXIT_ERROR
     if args.format == "json":
         print(_json(findings, diagnostics))
     else:
         for root, f in findings:
             loc = f.location
-            print(f"{_display(root / loc.path)}:{loc.line}:{loc.column}: {f.code} {f.message}")
+            print(escape_text(f"{_display(root / loc.path)}:{loc.line}:{loc.column}: {f.code} {f.message}"))
     # An error diagnostic (broken stub, an error the analysis caught) means an
     # incomplete graph, whose silence proves nothing: that is not a clean run.
     errors = [(root, d) for root, d in diagnostics if d.severity == "error"]
     for root, d in errors:
         where = f"{_display(root / d.path)}:{d.line}: " if d.path else ""
-        print(f"flake8-rosgraph check: {INTERNAL_ERROR_CODE} {where}{d.message}", file=sys.stderr)
+        print(escape_text(f"flake8-rosgraph check: {INTERNAL_ERROR_CODE} {where}{d.message}"), file=sys.stderr)
     if errors:
         return EXIT_ERROR
     return EXIT_FINDINGS if findings else EXIT_CLEAN

@@ -10,9 +10,12 @@ import argparse
 import json
 import os
 import sys
+import traceback
 from pathlib import Path
 
 from . import __version__, check_cli
+from .escaping import escape_text, json_safe
+from .options import TRUE_WORDS
 
 
 def _graph(args: argparse.Namespace) -> int:
@@ -29,7 +32,7 @@ def _graph(args: argparse.Namespace) -> int:
         if diag.severity == "info" and not args.verbose:
             continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
-        print(f"{where}{diag.severity}: {diag.message}", file=sys.stderr)
+        print(escape_text(f"{where}{diag.severity}: {diag.message}"), file=sys.stderr)
     shown = graph
     if args.launch:
         system = _find_system(graph, root, Path(args.launch))
@@ -45,9 +48,12 @@ def _graph(args: argparse.Namespace) -> int:
         obj = graph_to_json_obj(shown)
         if not args.launch:
             obj["systems"] = [system_to_json(s) for s in graph.systems]
-        text = json.dumps(obj, indent=1, ensure_ascii=False) + "\n"
+        text = json_safe(json.dumps(obj, indent=1, ensure_ascii=False)) + "\n"
     if args.output:
-        Path(args.output).write_text(text, encoding="utf-8")
+        try:
+            Path(args.output).write_text(text, encoding="utf-8", errors="surrogateescape")
+        except OSError as exc:
+            raise check_cli.UserError(f"cannot write {args.output}: {exc.strerror or exc}") from exc
     else:
         sys.stdout.write(text)
     return 0
@@ -95,6 +101,11 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (``| head``): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    except Exception as exc:  # one clear line, never a traceback
-        print(f"flake8-rosgraph: internal error: {type(exc).__name__}: {exc}", file=sys.stderr)
+    except Exception as exc:  # one clear line; the traceback only when asked for
+        if getattr(args, "debug", False) or os.environ.get("ROSGRAPH_DEBUG", "").strip().lower() in TRUE_WORDS:
+            traceback.print_exc()
+        if isinstance(exc, check_cli.UserError):
+            print(escape_text(f"flake8-rosgraph: error: {exc}"), file=sys.stderr)
+        else:
+            print(escape_text(f"flake8-rosgraph: internal error: {type(exc).__name__}: {exc}"), file=sys.stderr)
         return 2

@@ -50,7 +50,7 @@ ENV_VARS: dict[str, str] = {
     "cache_dir": "ROSGRAPH_CACHE_DIR",
     "debug": "ROSGRAPH_DEBUG",
 }
-_TRUE = frozenset({"1", "true", "yes", "on"})
+TRUE_WORDS = frozenset({"1", "true", "yes", "on"})
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ class Settings:
             external_topics=tuple(_names(pick("external_topics"))),
             sarif=_path(pick("sarif")),
             cache_dir=_path(pick("cache_dir")),
-            debug=bool(given.get("debug")) or environ.get(ENV_VARS["debug"], "").strip().lower() in _TRUE,
+            debug=bool(given.get("debug")) or environ.get(ENV_VARS["debug"], "").strip().lower() in TRUE_WORDS,
         )
 
     @classmethod
@@ -99,6 +99,18 @@ def _names(value: str | Sequence[str] | None) -> list[str]:
 
 def _path(value: str | None) -> Path | None:
     return Path(value) if value else None
+
+
+def root_problem(root: Path | None, option: str, given: Any = None) -> str | None:
+    """Why an explicitly given workspace root cannot be used (``None``: it can, or none was given)."""
+    if root is None:
+        return None
+    source = option if getattr(given, option.lstrip("-").replace("-", "_"), None) else ENV_VARS["root"]
+    if not root.exists():
+        return f"{source}: no such folder: {root}"
+    if not root.is_dir():
+        return f"{source}: not a folder: {root}"
+    return None
 
 
 def register_flake8_options(parser: Any) -> None:

@@ -32,7 +32,9 @@ from typing import Any, Callable, Iterator
 
 from . import __version__
 from .cache import WorkspaceReport, start_run, workspace_report
-from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options
+from .escaping import escape_text
+from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
+                      root_problem)
 from .root import discover_root, find_vcs_root
 from .findings import Finding
 
@@ -82,9 +84,12 @@ def _root_for(run: _Run, path: Path) -> Path:
     if run.settings.root is not None:
         return Path(os.path.abspath(run.settings.root))
     directory = path.parent
-    if directory not in run.roots:
-        run.roots[directory] = discover_root(path)
-    return run.roots[directory]
+    if directory in run.roots:
+        return run.roots[directory]
+    root = discover_root(path)
+    if root != path:  # a lone file that is its own root says nothing about its neighbours
+        run.roots[directory] = root
+    return root
 
 
 @functools.lru_cache(maxsize=8)
@@ -96,6 +101,8 @@ def _by_file(report: WorkspaceReport) -> dict[str, list[Finding]]:
 
 
 def _relative(path: Path, root: Path) -> str | None:
+    if root.is_file():  # a lone file is its own root; its findings are named relative to its folder
+        root = root.parent
     for candidate, base in ((path, root), (path.resolve(), root.resolve())):
         try:
             return candidate.relative_to(base).as_posix()
@@ -153,6 +160,11 @@ class RosGraphChecker:
         global _RUN
         start_run()
         settings = Settings.from_flake8(options)
+        problem = root_problem(settings.root, "--rosgraph-root", options)
+        if problem is not None:
+            # A user error, reported as flake8 reports a bad option value: one line, exit status 2.
+            print(f"flake8: error: {problem}", file=sys.stderr)
+            raise SystemExit(2)
         try:
             from .rules import RULES
 
@@ -180,9 +192,10 @@ class RosGraphChecker:
             yield 1, 0, _internal_error_text(_describe(exc)), type(self)
             return
         for error in errors:
-            yield 1, 0, _analysis_error_text(error), type(self)
+            yield 1, 0, escape_text(_analysis_error_text(error)), type(self)
         for finding in findings:
-            yield finding.location.line, finding.location.column - 1, f"{finding.code} {finding.message}", type(self)
+            yield (finding.location.line, finding.location.column - 1,
+                   escape_text(f"{finding.code} {finding.message}"), type(self))
 
 
 # -- the report stage ------------------------------------------------------------------------
@@ -249,7 +262,11 @@ def _report(manager: Any, original: Callable[[Any], Any]) -> Any:
         except Exception as exc:
             if run.settings.debug:
                 raise
-            print(f"flake8-rosgraph: could not write {run.settings.sarif}: {_describe(exc)}", file=sys.stderr)
+            print(f"flake8-rosgraph: error: could not write the SARIF file {run.settings.sarif}: "
+                  f"{_describe(exc)}", file=sys.stderr)
+            # Counted as one more reported result, so that flake8 exits with an error status.
+            total, found = counts
+            return total + 1, found + 1
     return counts
 
 

@@ -15,7 +15,10 @@ found from the checked file itself, in this order:
    ignoring one in the home directory or at ``/`` (a dotfiles repository is not
    a ROS workspace);
 3. otherwise the outermost of the current directory (when it contains the
-   file) and the file's ROS package directory, else the file's directory.
+   file) and the file's ROS package directory, else the file's directory —
+   never ``/`` or the home directory, which hold far more than one project
+   (walking them took minutes and gigabytes): a file directly in one of those
+   is its own root, analysed alone.
 
 An explicit root (``--rosgraph-root`` / ``ROSGRAPH_ROOT``) skips all of this.
 """
@@ -93,17 +96,32 @@ def find_package_dir(path: Path) -> Path | None:
     return None
 
 
+def _protected() -> set[Path]:
+    """Folders never taken as a fallback root: filesystem roots and the home directory."""
+    protected = {Path(os.path.abspath(os.sep))}
+    try:
+        protected.add(Path(os.path.abspath(Path.home())))
+    except RuntimeError:  # no home directory to protect
+        pass
+    return protected
+
+
 def discover_root(path: Path, cwd: Path | None = None) -> Path:
     """The workspace root for ``path`` (a file or directory), found as the module docstring says."""
     start = _start_dir(path)
     found = find_colcon_root(start) or find_vcs_root(start)
     if found is not None:
         return found
+    protected = _protected() | {Path(start.anchor)}
     candidates = [start]
     here = Path(os.path.abspath(cwd if cwd is not None else Path.cwd()))
-    if _is_within(start, here):
+    if _is_within(start, here) and here not in protected:
         candidates.append(here)
     package = find_package_dir(start)
-    if package is not None:
+    if package is not None and package not in protected:
         candidates.append(package)
-    return min(candidates, key=lambda p: len(p.parts))
+    chosen = min(candidates, key=lambda p: len(p.parts))
+    absolute = Path(os.path.abspath(path))
+    if chosen in protected and absolute != start:
+        return absolute  # a lone file in / or $HOME: analysed alone, nothing walked
+    return chosen

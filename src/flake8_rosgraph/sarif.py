@@ -32,6 +32,7 @@ from urllib.parse import quote
 import sarif_om as om
 from jschema_to_python.to_json import to_json
 
+from .escaping import escape_text, json_safe
 from . import __version__
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE
@@ -224,9 +225,10 @@ def _fingerprint(artifacts: _Artifacts, problem: Problem, occurrence: int) -> st
 
 
 def _message(problem: Problem) -> om.Message:
-    text = _escape(problem.message)
+    text = _escape(escape_text(problem.message))
     if problem.related:
-        links = ", ".join(f"[{_escape(label)}]({index})" for index, (_, label) in enumerate(problem.related, 1))
+        links = ", ".join(f"[{_escape(escape_text(label))}]({index})"
+                          for index, (_, label) in enumerate(problem.related, 1))
         text += f" Related: {links}."
     return om.Message(text=text)
 
@@ -234,7 +236,7 @@ def _message(problem: Problem) -> om.Message:
 def _notification(artifacts: _Artifacts, root: Path, diagnostic: Diagnostic) -> om.Notification:
     place = Place(root / diagnostic.path, diagnostic.line, 1)
     level = diagnostic.severity if diagnostic.severity in _SEVERITY else "warning"
-    return om.Notification(message=om.Message(text=diagnostic.message), level=level,
+    return om.Notification(message=om.Message(text=escape_text(diagnostic.message)), level=level,
                            locations=[om.Location(physical_location=_physical(artifacts, place))])
 
 
@@ -316,7 +318,7 @@ def _origin_for(code: str, origins: Mapping[str, Origin]) -> Origin | None:
 
 def dumps(log: Mapping[str, Any]) -> str:
     """The log as deterministic JSON text."""
-    return json.dumps(log, indent=2, ensure_ascii=False) + "\n"
+    return json_safe(json.dumps(log, indent=2, ensure_ascii=False)) + "\n"
 
 
 def write(path: Path, log: Mapping[str, Any]) -> None:

@@ -12,7 +12,6 @@ import ast
 import io
 import os
 import re
-import stat
 import sys
 import tokenize
 from dataclasses import dataclass
@@ -20,18 +19,13 @@ from pathlib import Path
 
 from .absint.program import Module
 from .graph.model import Diagnostic
+from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
 
-#: Folders never analysed: VCS data, colcon build products, caches, virtual envs.
-SKIP_DIRS = frozenset({
-    ".git", ".hg", ".svn", "build", "install", "log", "__pycache__", ".tox", ".nox",
-    ".venv", "venv", "node_modules", ".mypy_cache", ".pytest_cache", ".rosgraph-cache",
-    "site-packages", ".eggs",
-})
 #: On Python 3.10, a line with more call/attribute/subscript links than this is not parsed
 #: (its parser may segfault on such chains instead of raising).
 MAX_CHAIN_PY310 = 20_000
 #: Files larger than this are not analysed (a generated file, not a node).
-MAX_FILE_BYTES = 4 * 1024 * 1024
+MAX_FILE_BYTES = MAX_SOURCE_BYTES
 
 
 @dataclass
@@ -87,15 +81,9 @@ def _chain_links(line: str) -> int:
 def read_module(path: Path, root: Path) -> Module | Diagnostic:
     rel = relative(path, root)
     try:
-        info = path.stat()
-        if not stat.S_ISREG(info.st_mode):  # a FIFO or device would block or never end
-            return Diagnostic(rel, 1, "skipped: not a regular file")
-        if info.st_size > MAX_FILE_BYTES:
-            return Diagnostic(rel, 1, f"skipped: larger than {MAX_FILE_BYTES // (1024 * 1024)} MiB")
-        with path.open("rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)  # the file may grow after stat()
-        if len(data) > MAX_FILE_BYTES:
-            return Diagnostic(rel, 1, f"skipped: larger than {MAX_FILE_BYTES // (1024 * 1024)} MiB")
+        data = read_bytes(path, root, MAX_FILE_BYTES)
+    except UnsafeFile as exc:
+        return Diagnostic(rel, 1, f"skipped: {exc}".replace("skipped: not read: ", "skipped: "))
     except OSError as exc:
         return Diagnostic(rel, 1, f"cannot read file: {exc.strerror or exc}")
     try:

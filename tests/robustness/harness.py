@@ -43,9 +43,11 @@ class Run:
                 f"--- stderr ---\n{self.stderr[-4000:]}\n--- stdout ---\n{self.stdout[:2000]}")
 
 
-def _limit_memory() -> None:  # runs in the child, before exec
-    import resource
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP_BYTES, MEMORY_CAP_BYTES))
+def _memory_limiter(cap: int):
+    def limit() -> None:  # runs in the child, before exec
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+    return limit
 
 
 def clean_env(**extra: str) -> dict[str, str]:
@@ -56,7 +58,8 @@ def clean_env(**extra: str) -> dict[str, str]:
 
 
 def run(argv: Sequence[str], cwd: Path, env: Mapping[str, str] | None = None,
-        hang_is_failure: bool = True) -> Run | None:
+        hang_is_failure: bool = True, memory_cap: int = MEMORY_CAP_BYTES,
+        hang_guard: float = HANG_GUARD_S) -> Run | None:
     """Run ``argv`` under the hang guard and the memory cap; a hang fails the calling test
     (or, with ``hang_is_failure=False``, returns ``None``).
 
@@ -66,14 +69,15 @@ def run(argv: Sequence[str], cwd: Path, env: Mapping[str, str] | None = None,
     posix = os.name == "posix"
     child = subprocess.Popen(list(argv), cwd=cwd, env=dict(env) if env is not None else clean_env(),
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace",
-                             preexec_fn=_limit_memory if posix else None, start_new_session=posix)
+                             preexec_fn=_memory_limiter(memory_cap) if posix else None,
+                             start_new_session=posix)
     try:
-        stdout, stderr = child.communicate(timeout=HANG_GUARD_S)
+        stdout, stderr = child.communicate(timeout=hang_guard)
     except subprocess.TimeoutExpired:
         _kill_group(child)
         if not hang_is_failure:
             return None
-        pytest.fail(f"hang: {' '.join(argv)} did not finish within {HANG_GUARD_S} s (cwd {cwd})",
+        pytest.fail(f"hang: {' '.join(argv)} did not finish within {hang_guard} s (cwd {cwd})",
                     pytrace=False)
     return Run(tuple(argv), child.returncode, stdout, stderr)
 

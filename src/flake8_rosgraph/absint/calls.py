@@ -14,7 +14,7 @@ import string
 from dataclasses import dataclass
 
 from .engine import Effect
-from .folding import PURE_BUILTINS, call_str_method, fold, wide_template
+from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec
 from .program import Function
@@ -429,7 +429,7 @@ class CallSemantics:
     def call_str(self, receiver: Const, name: str, args: "Args") -> Value:
         recv = atoms([receiver])
         if name == "format":
-            if wide_template(receiver.value):
+            if wide_template(receiver.value) or not safe_template(receiver.value):
                 return TOP
             names = sorted(args.kw)
             pools = [recv] + list(args.pos) + [args.kw[k] for k in names]

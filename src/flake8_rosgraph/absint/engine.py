@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import ast
 from collections import deque
-from dataclasses import dataclass
-from typing import Hashable
+from dataclasses import dataclass, replace
+from typing import Hashable, Iterable
 
 from .library import LibraryModel
 from .program import Program
@@ -86,6 +86,8 @@ class Analysis:
         self._queued: set[Task] = set()
         self._known: set[Task] = set()
         self._exhausted = False
+        #: Tasks whose results had not settled when the budget ran out (see :meth:`all_effects`).
+        self.unsettled: set[Task] = set()
         size = len(program.functions) + len(program.modules)
         self.max_task_runs = max_task_runs if max_task_runs is not None else 200 + 60 * size
         self.task_runs = 0
@@ -186,6 +188,7 @@ class Analysis:
                     self.diagnostics.append(Diagnostic(
                         "", 0, f"analysis budget of {self.max_task_runs} task runs exhausted; "
                         "results may be incomplete"))
+                self.unsettled |= self._dependents(self._queue)
                 self._queue.clear()
                 self._queued.clear()
                 return
@@ -243,12 +246,30 @@ class Analysis:
         if task not in self._known:
             self.enqueue(task)
 
+    def _dependents(self, tasks: Iterable[Task]) -> set[Task]:
+        """``tasks`` and every task that read a return value of one of them, transitively."""
+        out = set(tasks)
+        todo = list(out)
+        while todo:
+            for reader in self.readers.get(("ret", todo.pop()), ()):
+                if reader not in out:
+                    out.add(reader)
+                    todo.append(reader)
+        return out
+
     # -- results --------------------------------------------------------------------------
     def all_effects(self) -> list[Effect]:
-        """Effects of the latest run of every task, deduplicated, in a stable order."""
+        """Effects of the latest run of every task, deduplicated, in a stable order.
+
+        An effect of a task that had not settled when the budget ran out may hold
+        a partial set of strings (a recursive name builder cut half-way): its
+        string arguments become ⊤, "unknown", never a partial set read as complete.
+        """
         seen: dict[Effect, None] = {}
-        for effects in self.effects.values():
+        for task, effects in self.effects.items():
             for eff in effects.values():
+                if task in self.unsettled:
+                    eff = replace(eff, args=tuple((k, TOP if v.strings() else v) for k, v in eff.args))
                 seen[eff] = None
         return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
 

@@ -11,6 +11,7 @@ import ast
 import itertools
 import operator
 import re
+import string
 from typing import Any, Callable
 
 from .values import MAX_ATOMS, TOP, Value, atoms, Const
@@ -69,6 +70,26 @@ _WIDTH_METHODS = frozenset({"center", "ljust", "rjust", "zfill"})
 def wide_template(text: object) -> bool:
     """Whether a format template/spec asks for a field wider than :data:`MAX_STR`."""
     return isinstance(text, str) and any(int(m) > MAX_STR for m in _WIDE.findall(text))
+
+
+def safe_template(text: object) -> bool:
+    """Whether a ``str.format`` template only substitutes its arguments whole.
+
+    A field like ``{0.__class__}`` or ``{0[x]}`` reads attributes or items of
+    the argument: folded on the analyser's own objects it would print their
+    internals (and memory addresses, so output stops being deterministic).
+    """
+    if not isinstance(text, str):
+        return True
+    try:
+        for _, name, spec, _ in string.Formatter().parse(text):
+            if name is not None and ("." in name or "[" in name):
+                return False
+            if spec and "{" in spec and not safe_template(spec):
+                return False
+    except (ValueError, RecursionError):
+        return False
+    return True
 
 
 def _guard_args(fn: Callable, args: tuple) -> bool:
@@ -132,6 +153,8 @@ def call_str_method(name: str, receiver: Value, args: list[Value]) -> Value:
         return TOP
     if name in _WIDTH_METHODS and any(
             isinstance(c, int) and c > MAX_STR for a in args for c in (a.consts() or ())):
+        return TOP
+    if name == "format" and not all(safe_template(c) for c in (receiver.consts() or ())):
         return TOP
     return fold(lambda s, *a: getattr(s, name)(*a) if isinstance(s, str) else _fail(),
                 [receiver, *args], wrap=_wrap_seq)

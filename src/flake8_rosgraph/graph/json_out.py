@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
+from ..escaping import json_safe
 from .model import KINDS, Entity, RosGraph, RosNode
 
 SCHEMA = "rosgraph/1"
@@ -65,4 +66,4 @@ def to_json_obj(graph: RosGraph) -> dict[str, Any]:
 
 
 def to_json(graph: RosGraph) -> str:
-    return json.dumps(to_json_obj(graph), indent=1, ensure_ascii=False) + "\n"
+    return json_safe(json.dumps(to_json_obj(graph), indent=1, ensure_ascii=False)) + "\n"

@@ -328,8 +328,11 @@ def is_hidden(name: str) -> bool:
 def edit_distance(a: str, b: str, limit: int) -> int:
     """Levenshtein distance between ``a`` and ``b``, or ``limit + 1`` as soon as it must exceed ``limit``.
 
-    Near-miss hints only care about small distances, so the row-by-row
-    computation stops once every entry of a row is above ``limit``.
+    Near-miss hints only care about small distances: a common prefix and suffix
+    (which do not change the distance) are dropped, only the band of cells
+    within ``limit`` of the diagonal is computed, and the computation stops once
+    a whole band row is above ``limit`` — linear in the names' length, not
+    quadratic (hundreds of long names sharing a prefix took minutes).
     """
     if limit < 0:
         raise ValueError("limit must not be negative")
@@ -337,16 +340,22 @@ def edit_distance(a: str, b: str, limit: int) -> int:
         return 0
     if abs(len(a) - len(b)) > limit:
         return limit + 1
-    previous = list(range(len(b) + 1))
+    start = 0
+    while start < min(len(a), len(b)) and a[start] == b[start]:
+        start += 1
+    end = 0
+    while end < min(len(a), len(b)) - start and a[-1 - end] == b[-1 - end]:
+        end += 1
+    a, b = a[start:len(a) - end], b[start:len(b) - end]
+    over = limit + 1
+    previous = [j if j <= limit else over for j in range(len(b) + 1)]
     for i, char_a in enumerate(a, 1):
-        current = [i]
-        for j, char_b in enumerate(b, 1):
-            current.append(min(
-                previous[j] + 1,
-                current[j - 1] + 1,
-                previous[j - 1] + (char_a != char_b),
-            ))
-        if min(current) > limit:
-            return limit + 1
+        low, high = max(1, i - limit), min(len(b), i + limit)
+        current = [over] * (len(b) + 1)
+        current[0] = i if i <= limit else over
+        for j in range(low, high + 1):
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (char_a != b[j - 1]))
+        if min(current[low - 1:high + 1]) > limit:
+            return over
         previous = current
-    return min(previous[-1], limit + 1)
+    return min(previous[-1], over)

@@ -12,32 +12,69 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from ..absint.engine import Analysis
 from ..graph.json_out import to_json_obj
-from ..graph.model import RosGraph
+from ..graph.model import Diagnostic, RosGraph
 from .discover import LaunchReader, frontend_launch_files, python_launch_files
 from .execute import Executor
-from .instantiate import apply_systems, instantiate
+from .instantiate import Instantiator, apply_systems
 from .model import LaunchedNode, System
-from .packages import find_packages
+from .packages import PackageIndex, find_packages
 from .targets import TargetIndex
 
 
-def systems_for(root: Path, graph: RosGraph, analysis: Analysis | None) -> list[System]:
-    """Every launch system under ``root``, one per launch file, in path order."""
+def systems_for(root: Path, graph: RosGraph, analysis: Analysis | None,
+                diagnostics: list[Diagnostic] | None = None, walk: bool = True) -> list[System]:
+    """Every launch system under ``root``, one per launch file, in path order.
+
+    Each system is executed and instantiated on its own: a failure in one is a
+    problem of that system, never the loss of the others.  Files, folders and
+    packages that cannot be read are added to ``diagnostics``.  Without
+    ``walk`` (a single file analysed) only the analysed Python launch files
+    count: no folder around them is searched for packages or launch files.
+    """
     root = Path(root)
-    packages = find_packages(root)
+    diagnostics = [] if diagnostics is None else diagnostics
+    packages = find_packages(root) if walk else PackageIndex()
+    diagnostics.extend(packages.diagnostics)
     targets = TargetIndex(analysis, packages)
     reader = LaunchReader(root, analysis)
     executor = Executor(root, packages, reader, targets.resolve)
-    files = sorted(set(python_launch_files(analysis)) | set(frontend_launch_files(root)))
-    systems = [executor.system(path) for path in files]
-    instantiate(root, graph, systems)
+    frontend = frontend_launch_files(root, diagnostics) if walk else []
+    files = sorted(set(python_launch_files(analysis)) | set(frontend))
+    binder = Instantiator(root)
+    systems = [_bound(binder, graph, _isolated(lambda: executor.system(path), path)) for path in files]
     for system in systems:
         system.problems = sorted(set(system.problems))
     return systems
+
+
+def _failed(path: str, exc: Exception) -> System:
+    """A system that could not be read: no nodes, one problem naming the failure."""
+    system = System(path, files=[path])
+    system.problems.append(Diagnostic(path, 1, f"launch file not analysed: internal error: "
+                                               f"{type(exc).__name__}: {exc}"[:300]))
+    return system
+
+
+def _isolated(build: Callable[[], System], path: str) -> System:
+    try:
+        return build()
+    except Exception as exc:  # one launch file's failure costs that system only
+        return _failed(path, exc)
+
+
+def _bound(binder: Instantiator, graph: RosGraph, system: System) -> System:
+    """``system`` with its instances bound to the code graph, or a failed system if that raises."""
+    try:
+        binder.system(graph, system)
+        return system
+    except Exception as exc:
+        failed = _failed(system.launch_file, exc)
+        binder.system(graph, failed)
+        return failed
 
 
 def system_for_file(root: Path, graph: RosGraph, analysis: Analysis | None, launch_file: Path) -> System:
@@ -46,8 +83,7 @@ def system_for_file(root: Path, graph: RosGraph, analysis: Analysis | None, laun
     path = Path(launch_file).resolve().relative_to(root.resolve()).as_posix()
     packages = find_packages(root)
     executor = Executor(root, packages, LaunchReader(root, analysis), TargetIndex(analysis, packages).resolve)
-    system = executor.system(path)
-    instantiate(root, graph, [system])
+    system = _bound(Instantiator(root), graph, _isolated(lambda: executor.system(path), path))
     system.problems = sorted(set(system.problems))
     return system
 

@@ -12,10 +12,12 @@ import xml.parsers.expat
 from pathlib import Path
 
 from ..absint.engine import Analysis
+from ..graph.model import Diagnostic
+from ..safe_io import describe, is_within, read_text
 from ..workspace import SKIP_DIRS
 from .actions import Action
 from .python_front import ENTRY_FUNCTION, read_python_launch
-from .xml_front import parse_xml, read_xml_launch
+from .xml_front import XmlRefused, parse_xml, read_xml_launch
 from .yaml_front import read_yaml_launch
 from .yaml_reader import YamlError
 
@@ -29,30 +31,44 @@ def python_launch_files(analysis: Analysis | None) -> list[str]:
                    if f.parent is None and f.cls is None and f.qualname == ENTRY_FUNCTION})
 
 
-def _looks_like_launch(path: Path) -> bool:
+def _looks_like_launch(path: Path, root: Path, diagnostics: list[Diagnostic]) -> bool:
+    rel = path.relative_to(root).as_posix()
     try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError):
+        text = read_text(path, root)
+    except (OSError, UnicodeDecodeError) as exc:
+        diagnostics.append(Diagnostic(rel, 1, f"launch file candidate not read: {describe(exc)}"))
         return False
     if path.suffix == ".xml":
         try:
             return parse_xml(text).tag == "launch"
-        except (xml.parsers.expat.ExpatError, IndexError):
+        except (xml.parsers.expat.ExpatError, XmlRefused, IndexError) as exc:
+            if path.name.endswith(".launch.xml"):
+                diagnostics.append(Diagnostic(rel, getattr(exc, "lineno", 1) or 1,
+                                              f"launch file not read: XML error: {exc}"))
             return False
     return any(line.rstrip() == "launch:" for line in text.splitlines())
 
 
-def frontend_launch_files(root: Path) -> list[str]:
+def frontend_launch_files(root: Path, diagnostics: list[Diagnostic] | None = None) -> list[str]:
+    """XML/YAML launch files under ``root``; what cannot be read becomes one of ``diagnostics``."""
+    diagnostics = [] if diagnostics is None else diagnostics
     found: list[str] = []
     if not root.is_dir():
         return found
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
+
+    def unreadable(error: OSError) -> None:
+        where = Path(error.filename or root)
+        rel = where.relative_to(root).as_posix() if is_within(where, root) else where.name
+        diagnostics.append(Diagnostic(rel, 1, f"folder not read, launch files in it are not analysed: "
+                                              f"{error.strerror or error}"))
+
+    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         in_launch_dir = Path(dirpath).name == "launch"
         for name in sorted(filenames):
             path = Path(dirpath) / name
             if path.suffix in FRONTEND_SUFFIXES and ("launch" in name or in_launch_dir) \
-                    and _looks_like_launch(path):
+                    and _looks_like_launch(path, root, diagnostics):
                 found.append(path.relative_to(root).as_posix())
     return sorted(found)
 
@@ -76,9 +92,9 @@ class LaunchReader:
                 return [], "Python launch files need the analysis"
             return read_python_launch(self.analysis, path)
         try:
-            text = (self.root / path).read_text(encoding="utf-8")
+            text = read_text(self.root / path, self.root)
         except (OSError, UnicodeDecodeError) as exc:
-            return [], f"cannot read: {exc}"
+            return [], f"cannot read: {describe(exc)}"
         try:
             if path.endswith(".xml"):
                 return read_xml_launch(path, text), None
@@ -86,6 +102,8 @@ class LaunchReader:
                 return read_yaml_launch(path, text), None
         except xml.parsers.expat.ExpatError as exc:
             return [], f"XML error: {exc}"
+        except XmlRefused as exc:
+            return [], f"XML refused: {exc}"
         except YamlError as exc:
             return [], f"YAML error: {exc}"
         except IndexError:

@@ -32,6 +32,9 @@ from .packages import PackageIndex
 
 #: Include depth at which a (probably recursive) include chain is cut.
 MAX_INCLUDE_DEPTH = 16
+#: Launch files one system may run in total (counting each inclusion): bounds include fan-out,
+#: where 16 files each including the next one 8 times would otherwise run 8**15 files.
+MAX_INCLUDED_FILES = 512
 
 
 class Unresolved(Exception):
@@ -79,10 +82,12 @@ class Executor:
         self.packages = packages
         self.read = read
         self.resolve_target = resolve_target
+        self._files_left = MAX_INCLUDED_FILES
 
     def system(self, path: str) -> System:
         system = System(path)
         scope = Scope(path)
+        self._files_left = MAX_INCLUDED_FILES
         self.run_file(path, scope, system, ())
         system.arguments = dict(sorted(scope.configs.items()))
         return system
@@ -218,6 +223,12 @@ class Executor:
         if path in stack or len(stack) >= MAX_INCLUDE_DEPTH:
             system.problems.append(_problem(action.location, f"include of '{path}' is recursive"))
             return
+        if self._files_left <= 0:
+            system.problems.append(_problem(
+                action.location, f"include of '{path}' not followed: the system already runs "
+                                 f"{MAX_INCLUDED_FILES} launch files (include budget)"))
+            return
+        self._files_left -= 1
         inner = scope.child(file=path, conditional=scope.conditional or action.condition is not None)
         if action.arguments is None:
             inner.opaque = True

@@ -12,10 +12,15 @@ from __future__ import annotations
 from .actions import Join, PkgShare, Subst, Text, ThisDir, Unknown, Var
 
 
+#: Deepest ``$(…)`` nesting followed; deeper parts are one Unknown (real files nest two or three).
+MAX_SUBST_DEPTH = 16
+
+
 class _Parser:
     def __init__(self, source: str) -> None:
         self.source = source
         self.pos = 0
+        self.depth = 0
 
     def parse(self, stop: str = "") -> Subst:
         """Text and substitutions up to an unquoted character in ``stop`` (or the end)."""
@@ -28,7 +33,12 @@ class _Parser:
                     parts.append(Text("".join(buf)))
                     buf = []
                 self.pos += 2
+                if self.depth >= MAX_SUBST_DEPTH:
+                    parts.append(self._skip_substitution())
+                    continue
+                self.depth += 1
                 parts.append(self._substitution())
+                self.depth -= 1
                 continue
             if char in stop:
                 break
@@ -59,6 +69,19 @@ class _Parser:
                 args.append(self.parse(stop=" \t\n)"))
         return Unknown(f"unterminated '$({name}'")
 
+    def _skip_substitution(self) -> Subst:
+        """Step over one ``$(…)`` (already opened) in linear time, without reading its parts."""
+        open_parts = 1
+        while self.pos < len(self.source) and open_parts:
+            if self.source.startswith("$(", self.pos):
+                open_parts += 1
+                self.pos += 2
+                continue
+            if self.source[self.pos] == ")":
+                open_parts -= 1
+            self.pos += 1
+        return Unknown(f"substitutions nested deeper than {MAX_SUBST_DEPTH} are not evaluated")
+
     def _word(self) -> str:
         start = self.pos
         while self.pos < len(self.source) and self.source[self.pos] not in " \t\n)":
@@ -67,6 +90,8 @@ class _Parser:
 
 
 def _build(name: str, args: list[Subst]) -> Subst:
+    if name == "var" and len(args) == 1 and isinstance(args[0], Unknown):
+        return args[0]  # the inner reason (e.g. nesting too deep) says more than "not evaluated"
     if name == "var" and len(args) == 1 and isinstance(args[0], Text):
         return Var(args[0].text)
     if name == "find-pkg-share" and len(args) == 1:

@@ -24,8 +24,11 @@ import xml.parsers.expat
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
+from ..safe_io import describe, is_regular_file, is_within, read_bytes, read_text
 from ..workspace import SKIP_DIRS
+from .xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
 
 
 @dataclass(frozen=True)
@@ -63,9 +66,18 @@ def _rel(path: Path, root: Path) -> str:
     return rel or "."
 
 
-def package_xml_files(root: Path) -> list[Path]:
+def package_xml_files(root: Path, diagnostics: list[Diagnostic] | None = None) -> list[Path]:
+    """Every ``package.xml`` under ``root``; a folder that cannot be listed is one of ``diagnostics``."""
     found: list[Path] = []
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
+
+    def unreadable(error: OSError) -> None:
+        if diagnostics is not None:
+            where = Path(error.filename or root)
+            rel = _rel(where, root) if is_within(where, root) else where.name
+            diagnostics.append(Diagnostic(rel, 1, f"folder not read, packages in it are not known: "
+                                                  f"{error.strerror or error}"))
+
+    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         if "package.xml" in filenames:
             found.append(Path(dirpath) / "package.xml")
@@ -78,9 +90,11 @@ def _xml_texts(text: str) -> dict[str, str]:
     """``name`` and ``build_type`` of a package.xml (first occurrence of each)."""
     out: dict[str, str] = {}
     stack: list[str] = []
-    parser = xml.parsers.expat.ParserCreate()
+    parser = safe_parser()
 
     def start(tag: str, attrs: dict) -> None:
+        if len(stack) >= MAX_XML_DEPTH:
+            raise XmlRefused(f"line {parser.CurrentLineNumber}: elements nested deeper than {MAX_XML_DEPTH}")
         stack.append(tag)
 
     def end(tag: str) -> None:
@@ -100,12 +114,22 @@ def _xml_texts(text: str) -> dict[str, str]:
     return {k: v.strip() for k, v in out.items()}
 
 
-def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
+def _unread(path: Path, root: Path, exc: Exception, notes: list[Diagnostic]) -> None:
+    """Note a package file that could not be read (the package's executables become unknown)."""
+    notes.append(Diagnostic(_rel(path, root), 1,
+                            f"not read, the package's executables are unknown: {describe(exc)}"))
+
+
+def read_package(xml_path: Path, root: Path, notes: list[Diagnostic] | None = None) -> Package | Diagnostic:
+    """The package of ``xml_path``; files it cannot read are added to ``notes``."""
+    notes = [] if notes is None else notes
     rel = _rel(xml_path, root)
     try:
-        fields = _xml_texts(xml_path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, xml.parsers.expat.ExpatError) as exc:
-        return Diagnostic(rel, 1, f"cannot read package.xml: {exc}")
+        fields = _xml_texts(read_text(xml_path, root))
+    except (OSError, UnicodeDecodeError) as exc:
+        return Diagnostic(rel, 1, f"package.xml not read: {describe(exc)}")
+    except (xml.parsers.expat.ExpatError, XmlRefused) as exc:
+        return Diagnostic(rel, getattr(exc, "lineno", 1) or 1, f"package.xml not read: {exc}")
     if not fields.get("name"):
         return Diagnostic(rel, 1, "package.xml has no <name>")
     folder = xml_path.parent
@@ -113,15 +137,15 @@ def read_package(xml_path: Path, root: Path) -> Package | Diagnostic:
         "ament_python" if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file()
         else "ament_cmake")
     package = Package(fields["name"], _rel(folder, root), build_type)
-    scripts = _console_scripts(folder, package.name)
+    scripts = _console_scripts(folder, root, notes)
     if scripts is None:
         package.complete = False
     else:
         for exe in scripts:
             package.executables.setdefault(exe.name, exe)
     cmake = folder / "CMakeLists.txt"
-    if cmake.is_file():
-        if not _cmake_executables(cmake, folder, root, package):
+    if cmake.exists():
+        if not _cmake_executables(cmake, folder, root, package, notes):
             package.complete = False
     elif build_type != "ament_python":
         package.complete = False  # a compiled package whose build file we cannot see
@@ -137,21 +161,24 @@ def _entry(spec: str) -> Executable | None:
     return Executable(name.strip(), module.strip(), function.strip().split()[0] if function.strip() else None)
 
 
-def _console_scripts(folder: Path, package_name: str) -> list[Executable] | None:
+def _console_scripts(folder: Path, root: Path, notes: list[Diagnostic]) -> list[Executable] | None:
     """Entry points from setup.cfg and setup.py; ``None`` when setup.py hides them from static reading."""
     out: list[Executable] = []
     cfg = folder / "setup.cfg"
-    if cfg.is_file():
+    if cfg.exists():
         parser = configparser.ConfigParser(interpolation=None)
         try:
-            parser.read_string(cfg.read_text(encoding="utf-8"))
+            parser.read_string(read_text(cfg, root))
             raw = parser.get("options.entry_points", "console_scripts", fallback="")
-        except (configparser.Error, OSError, UnicodeDecodeError):
+        except (OSError, UnicodeDecodeError) as exc:
+            _unread(cfg, root, exc, notes)
+            return None
+        except configparser.Error:
             return None
         out.extend(e for e in map(_entry, raw.splitlines()) if e is not None)
     setup = folder / "setup.py"
-    if setup.is_file():
-        found = _setup_py_scripts(setup)
+    if setup.exists():
+        found = _setup_py_scripts(setup, root, notes)
         if found is None:
             return None
         out.extend(found)
@@ -176,14 +203,14 @@ class _Folder(ast.NodeVisitor):
                     for k, v in zip(node.keys, node.values)}
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
             left, right = self.value(node.left), self.value(node.right)
-            if isinstance(left, str) and isinstance(right, str):
+            if isinstance(left, str) and isinstance(right, str) and len(left) + len(right) <= MAX_STR:
                 return left + right
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod):
             left, right = self.value(node.left), self.value(node.right)
-            if isinstance(left, str):
+            if isinstance(left, str) and not wide_template(left):
                 try:
-                    return left % (tuple(right) if isinstance(right, list) else right)
-                except (TypeError, ValueError):
+                    return _bounded(left % (tuple(right) if isinstance(right, list) else right))
+                except (TypeError, ValueError, KeyError):
                     return _UNKNOWN
         if isinstance(node, ast.JoinedStr):
             parts = []
@@ -197,14 +224,15 @@ class _Folder(ast.NodeVisitor):
                     parts.append(str(inner))
                 else:
                     return _UNKNOWN
-            return "".join(parts)
+            return _bounded("".join(parts))
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
                 and node.func.attr == "format" and not node.keywords:
             template = self.value(node.func.value)
             args = [self.value(a) for a in node.args]
-            if isinstance(template, str) and all(isinstance(a, (str, int)) for a in args):
+            if isinstance(template, str) and safe_template(template) \
+                    and all(isinstance(a, (str, int)) for a in args):
                 try:
-                    return template.format(*args)
+                    return _bounded(template.format(*args))
                 except (IndexError, KeyError, ValueError):
                     return _UNKNOWN
         return _UNKNOWN
@@ -213,11 +241,26 @@ class _Folder(ast.NodeVisitor):
 _UNKNOWN = object()
 
 
-def _setup_py_scripts(path: Path) -> list[Executable] | None:
+def _bounded(text: str) -> object:
+    return text if len(text) <= MAX_STR else _UNKNOWN
+
+
+def _setup_py_scripts(path: Path, root: Path, notes: list[Diagnostic]) -> list[Executable] | None:
+    """The ``console_scripts`` of ``setup.py``; ``None`` when not statically readable (or too big/deep)."""
     try:
-        tree = ast.parse(path.read_bytes(), filename=str(path))
-    except (SyntaxError, ValueError, OSError):
+        tree = ast.parse(read_bytes(path, root), filename=str(path))
+        return _setup_call_scripts(tree)
+    except OSError as exc:
+        _unread(path, root, exc, notes)
         return None
+    except (RecursionError, MemoryError, OverflowError) as exc:
+        _unread(path, root, ValueError(f"too deeply nested to read ({type(exc).__name__})"), notes)
+        return None
+    except (SyntaxError, ValueError):
+        return None
+
+
+def _setup_call_scripts(tree: ast.Module) -> list[Executable] | None:
     folder = _Folder()
     for stmt in tree.body:
         if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
@@ -247,44 +290,156 @@ def _setup_py_scripts(path: Path) -> list[Executable] | None:
 
 
 # -- CMakeLists.txt ---------------------------------------------------------------------------
-_ADD_EXECUTABLE = re.compile(r"\badd_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
-_INSTALL_PROGRAMS = re.compile(
-    r"\binstall\s*\(\s*PROGRAMS\s+([^)]*?)\s+DESTINATION\s+lib/\$\{PROJECT_NAME\}", re.IGNORECASE)
-_CMAKE_COMMENT = re.compile(r"#[^\n]*")
+_BRACKET_OPEN = re.compile(r"\[(=*)\[")
 
 
-def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package) -> bool:
+def _bracket_end(text: str, pos: int) -> tuple[int, str] | None:
+    """For a bracket argument/comment opening at ``pos`` (``[==[``): its end and its content."""
+    match = _BRACKET_OPEN.match(text, pos)
+    if match is None:
+        return None
+    close = "]" + match.group(1) + "]"
+    end = text.find(close, match.end())
+    end = len(text) if end < 0 else end
+    return end + len(close), text[match.end():end]
+
+
+def _skip_comment(text: str, pos: int) -> int:
+    """The position after the comment starting with ``#`` at ``pos``."""
+    bracket = _bracket_end(text, pos + 1)
+    if bracket is not None:
+        return bracket[0]
+    end = text.find("\n", pos)
+    return len(text) if end < 0 else end
+
+
+def _quoted_end(text: str, pos: int) -> int:
+    """The position after the quoted argument opening at ``pos``."""
+    i = pos + 1
+    while i < len(text):
+        char = text[i]
+        if char == "\\":
+            i += 2
+        elif char == '"':
+            return i + 1
+        else:
+            i += 1
+    return len(text)
+
+
+def _arguments(text: str, pos: int) -> tuple[list[str], int]:
+    """The arguments of a command whose ``(`` is at ``pos``, and the position after its ``)``."""
+    args: list[str] = []
+    depth, i, start = 1, pos + 1, -1
+    while i < len(text) and depth:
+        char = text[i]
+        if start < 0 and char == '"':
+            end = _quoted_end(text, i)
+            args.append(text[i + 1:end - 1])
+            i = end
+            continue
+        if start < 0 and char == "[" and _bracket_end(text, i) is not None:
+            end, content = _bracket_end(text, i)  # type: ignore[misc]
+            args.append(content)
+            i = end
+            continue
+        if char == "#" and start < 0:
+            i = _skip_comment(text, i)
+            continue
+        if char.isspace() or char in "()":
+            if start >= 0:
+                args.append(text[start:i])
+                start = -1
+            depth += char == "("
+            depth -= char == ")"
+        elif start < 0:
+            start = i
+        i += 1
+    if start >= 0:
+        args.append(text[start:i])
+    return args, i
+
+
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def cmake_commands(text: str) -> list[tuple[str, list[str]]]:
+    """``(lower-case command name, arguments)`` of each command invocation, in one linear pass.
+
+    A hand-written scanner rather than regular expressions over the whole file:
+    a pattern spanning arguments backtracks on inputs like ``install(PROGRAMS``
+    followed by thousands of spaces.
+    """
+    commands: list[tuple[str, list[str]]] = []
+    i = 0
+    while i < len(text):
+        char = text[i]
+        if char == "#":
+            i = _skip_comment(text, i)
+        elif char == '"':
+            i = _quoted_end(text, i)
+        elif char == "_" or char.isalpha():
+            match = _IDENTIFIER.match(text, i)
+            end = match.end() if match else i + 1
+            j = end
+            while j < len(text) and text[j] in " \t":
+                j += 1
+            if j < len(text) and text[j] == "(":
+                name = text[i:end].lower()
+                args, i = _arguments(text, j)
+                commands.append((name, args))
+            else:
+                i = end
+        else:
+            i += 1
+    return commands
+
+
+def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
+                       notes: list[Diagnostic]) -> bool:
     """Add the CMake targets and installed scripts; false when a name is not literal."""
     try:
-        text = _CMAKE_COMMENT.sub("", cmake.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError):
+        commands = cmake_commands(read_text(cmake, root))
+    except (OSError, UnicodeDecodeError) as exc:
+        _unread(cmake, root, exc, notes)
         return False
     complete = True
-    for match in _ADD_EXECUTABLE.finditer(text):
-        name = match.group(1)
-        if "$" in name:
-            complete = False
-            continue
-        package.executables.setdefault(name, Executable(name, language="cpp"))
-    for match in _INSTALL_PROGRAMS.finditer(text):
-        for item in match.group(1).split():
-            if "$" in item:
+    for name, args in commands:
+        if name == "add_executable" and args:
+            if "$" in args[0]:
                 complete = False
                 continue
-            script = folder / item
-            package.executables.setdefault(Path(item).name, Executable(
-                Path(item).name, script=_rel(script, root) if script.is_file() else None))
+            package.executables.setdefault(args[0], Executable(args[0], language="cpp"))
+        elif name == "install" and args and args[0].upper() == "PROGRAMS" and "DESTINATION" in args:
+            at = args.index("DESTINATION")
+            if args[at + 1:at + 2] != ["lib/${PROJECT_NAME}"]:
+                continue
+            for item in args[1:at]:
+                if "$" in item:
+                    complete = False
+                    continue
+                script = folder / item
+                package.executables.setdefault(Path(item).name, Executable(
+                    Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
     return complete
 
 
 def find_packages(root: Path) -> PackageIndex:
-    """Every package under ``root`` (a duplicate name: the first in path order wins, with a diagnostic)."""
+    """Every package under ``root`` (a duplicate name: the first in path order wins, with a diagnostic).
+
+    Each package is read on its own: one that cannot be read is a diagnostic on
+    its ``package.xml``, never the loss of the others.
+    """
     index = PackageIndex()
     root = Path(root)
     if not root.is_dir():
         return index
-    for xml_path in package_xml_files(root):
-        result = read_package(xml_path, root)
+    for xml_path in package_xml_files(root, index.diagnostics):
+        try:
+            result = read_package(xml_path, root, index.diagnostics)
+        except Exception as exc:  # one package's failure costs that package only
+            result = Diagnostic(_rel(xml_path, root), 1,
+                                f"package not read: internal error: {type(exc).__name__}: {exc}"[:300])
         if isinstance(result, Diagnostic):
             index.diagnostics.append(result)
         elif result.name in index.packages:

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..graph.model import Location
+from ..safe_io import read_text
 from .yaml_reader import YamlError, YNode, read_yaml
 
 PARAMS_KEY = "ros__parameters"
@@ -72,7 +73,7 @@ def _sections(node: YNode, tokens: list[str], path: str, out: list[Section]) -> 
 
 def read_param_file(root: Path, path: str) -> list[Section]:
     """The sections of the parameter file at ``path`` (root-relative); raises ``YamlError``/``OSError``."""
-    text = (Path(root) / path).read_text(encoding="utf-8")
+    text = read_text(Path(root) / path, Path(root))
     out: list[Section] = []
     _sections(read_yaml(text), [], path, out)
     return out

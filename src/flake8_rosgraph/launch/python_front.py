@@ -12,6 +12,7 @@ executed: values the analysis could not pin down become
 """
 from __future__ import annotations
 
+import re
 from typing import Any, Iterable
 
 from ..absint.engine import Analysis
@@ -41,10 +42,17 @@ _INERT = frozenset({"LogInfo", "SetEnvironmentVariable", "AppendEnvironmentVaria
                     "SetROSLogDir", "EmitEvent"})
 
 
+#: A call site: ``path:line:col``, with ``@<context index>`` appended inside functions.
+#: The path may itself hold ``@`` and ``:``, so the numbers are taken from the end.
+_SITE = re.compile(r"^(.*):(\d+):(\d+)(?:@\d+)?$", re.DOTALL)
+
+
 def _site_location(site: str) -> Location:
     """``path:line:col`` (``@context`` appended inside functions) → a 1-based location."""
-    path, line, column = site.split("@", 1)[0].rsplit(":", 2)
-    return Location(path, int(line), int(column) + 1)
+    match = _SITE.match(site)
+    if match is None:
+        raise ValueError(f"not a call site: {site!r}")
+    return Location(match.group(1), int(match.group(2)), int(match.group(3)) + 1)
 
 
 def launch_description(analysis: Analysis, path: str) -> Value | None:

@@ -30,13 +30,44 @@ class Element:
     children: list["Element"] = field(default_factory=list)
 
 
-def parse_xml(text: str) -> Element:
-    """The document's root element; raises :class:`xml.parsers.expat.ExpatError` with a line."""
+#: Deepest element nesting read (real launch files nest a handful of groups).
+MAX_XML_DEPTH = 100
+
+
+class XmlRefused(ValueError):
+    """A document this tool will not read (a DTD with declarations, nesting beyond the limit)."""
+
+
+def safe_parser() -> "xml.parsers.expat.XMLParserType":
+    """An expat parser that refuses a DTD internal subset and entity declarations before expanding any.
+
+    Launch files and manifests never need them; refusing them is what keeps
+    "billion laughs" and similar entity expansions from costing time or memory.
+    """
     parser = xml.parsers.expat.ParserCreate()
+    parser.SetParamEntityParsing(xml.parsers.expat.XML_PARAM_ENTITY_PARSING_NEVER)
+
+    def doctype(name: str, system_id: str | None, public_id: str | None, internal: int) -> None:
+        if internal:
+            raise XmlRefused(f"line {parser.CurrentLineNumber}: a DOCTYPE with declarations is not read")
+
+    def entity(*_: object) -> None:
+        raise XmlRefused(f"line {parser.CurrentLineNumber}: entity declarations are not read")
+
+    parser.StartDoctypeDeclHandler = doctype
+    parser.EntityDeclHandler = entity
+    return parser
+
+
+def parse_xml(text: str) -> Element:
+    """The document's root element; raises ``ExpatError`` or :class:`XmlRefused` with a line."""
+    parser = safe_parser()
     stack: list[Element] = []
     roots: list[Element] = []
 
     def start(tag: str, attrs: dict[str, str]) -> None:
+        if len(stack) >= MAX_XML_DEPTH:
+            raise XmlRefused(f"line {parser.CurrentLineNumber}: elements nested deeper than {MAX_XML_DEPTH}")
         element = Element(tag, dict(attrs), parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
         (stack[-1].children if stack else roots).append(element)
         stack.append(element)

@@ -17,6 +17,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 
+#: Deepest nesting of collections read (real launch and parameter files nest a few levels).
+MAX_DEPTH = 100
+#: Most nodes a document may hold once its aliases are expanded (a "billion laughs" stops here).
+MAX_NODES = 1_000_000
+
+
 class YamlError(Exception):
     def __init__(self, line: int, message: str) -> None:
         super().__init__(f"line {line}: {message}")
@@ -35,6 +41,8 @@ class YNode:
     line: int
     column: int = 1
     key_lines: dict[str, int] = field(default_factory=dict)
+    #: Nodes in this value with every alias expanded (what :meth:`plain` would build).
+    size: int = 1
 
     def plain(self) -> Any:
         """The value with positions dropped, as ``yaml.safe_load`` would return it."""
@@ -97,6 +105,7 @@ class _Reader:
         self.anchors: dict[str, YNode] = {}
         self.lines: list[_Line] = []
         self.index = 0
+        self.depth = 0
         for number, raw in enumerate(self.raw, 1):
             if "\t" in raw[:len(raw) - len(raw.lstrip())]:
                 raise YamlError(number, "tab in indentation")
@@ -120,12 +129,18 @@ class _Reader:
 
     def block(self, indent: int) -> YNode:
         line = self.lines[self.index]
-        if line.text == "-" or line.text.startswith("- "):
-            return self.sequence(indent)
-        if _split_key(line.text) is not None:
-            return self.mapping(indent)
-        self.index += 1
-        return self.inline(line.text, line, line.indent)
+        if self.depth >= MAX_DEPTH:
+            raise YamlError(line.number, f"collections nested deeper than {MAX_DEPTH}")
+        self.depth += 1
+        try:
+            if line.text == "-" or line.text.startswith("- "):
+                return self.sequence(indent)
+            if _split_key(line.text) is not None:
+                return self.mapping(indent)
+            self.index += 1
+            return self.inline(line.text, line, line.indent)
+        finally:
+            self.depth -= 1
 
     def sequence(self, indent: int) -> YNode:
         first = self.lines[self.index]
@@ -145,7 +160,7 @@ class _Reader:
             offset = len(line.text) - len(rest)
             self.lines[self.index] = _Line(line.number, indent + offset, rest)
             items.append(self.block(indent + offset))
-        return YNode(items, first.number, first.indent + 1)
+        return sized(YNode(items, first.number, first.indent + 1))
 
     def mapping(self, indent: int) -> YNode:
         first = self.lines[self.index]
@@ -179,7 +194,7 @@ class _Reader:
                 continue
             out[key] = value
             keys[key] = line.number
-        return YNode(out, first.number, first.indent + 1, keys)
+        return sized(YNode(out, first.number, first.indent + 1, keys))
 
     def child(self, indent: int, owner: _Line) -> YNode:
         if self.index < len(self.lines) and self.lines[self.index].indent > indent:
@@ -206,10 +221,13 @@ class _Reader:
         if text[:1] in ("|", ">"):
             node = YNode(self.block_scalar(text[0], line), line.number, column + 1)
         elif text[:1] in ("[", "{"):
-            while _unbalanced(text) and self.index < len(self.lines):
-                text += " " + self.lines[self.index].text
+            depth, quote = _flow_state(text, 0, "")
+            parts = [text]
+            while depth > 0 and self.index < len(self.lines):  # linear: each line scanned once
+                parts.append(self.lines[self.index].text)
+                depth, quote = _flow_state(parts[-1], depth, quote)
                 self.index += 1
-            flow = _Flow(text, line.number)
+            flow = _Flow(" ".join(parts), line.number)
             value = flow.value()
             flow.end()
             node = value
@@ -282,9 +300,8 @@ def _quoted(text: str, start: int, line: int) -> tuple[str, int]:
     raise YamlError(line, "unterminated quoted scalar")
 
 
-def _unbalanced(text: str) -> bool:
-    depth = 0
-    quote = ""
+def _flow_state(text: str, depth: int, quote: str) -> tuple[int, str]:
+    """Bracket depth and open quote after ``text``, continuing from ``depth`` and ``quote``."""
     for char in text:
         if quote:
             quote = "" if char == quote else quote
@@ -294,7 +311,17 @@ def _unbalanced(text: str) -> bool:
             depth += 1
         elif char in "]}":
             depth -= 1
-    return depth > 0
+    return depth, quote
+
+
+def sized(node: YNode) -> YNode:
+    """``node`` with its expanded size set; :class:`YamlError` past :data:`MAX_NODES`."""
+    children = node.value.values() if isinstance(node.value, dict) else \
+        node.value if isinstance(node.value, list) else ()
+    node.size = 1 + sum(child.size for child in children)
+    if node.size > MAX_NODES:
+        raise YamlError(node.line, f"more than {MAX_NODES} values once aliases are expanded")
+    return node
 
 
 class _Flow:
@@ -304,6 +331,7 @@ class _Flow:
         self.text = text
         self.pos = 0
         self.line = line
+        self.depth = 0
 
     def _skip(self) -> None:
         while self.pos < len(self.text) and self.text[self.pos] == " ":
@@ -315,6 +343,15 @@ class _Flow:
             raise YamlError(self.line, f"unexpected {self.text[self.pos:self.pos + 20]!r}")
 
     def value(self) -> YNode:
+        if self.depth >= MAX_DEPTH:
+            raise YamlError(self.line, f"collections nested deeper than {MAX_DEPTH}")
+        self.depth += 1
+        try:
+            return self._value()
+        finally:
+            self.depth -= 1
+
+    def _value(self) -> YNode:
         self._skip()
         char = self.text[self.pos:self.pos + 1]
         if char == "[":
@@ -324,7 +361,7 @@ class _Flow:
                 self._skip()
                 if self.text[self.pos:self.pos + 1] == "]":
                     self.pos += 1
-                    return YNode(items, self.line)
+                    return sized(YNode(items, self.line))
                 items.append(self.value())
                 self._separator("]")
         if char == "{":
@@ -334,7 +371,7 @@ class _Flow:
                 self._skip()
                 if self.text[self.pos:self.pos + 1] == "}":
                     self.pos += 1
-                    return YNode(out, self.line, key_lines={k: self.line for k in out})
+                    return sized(YNode(out, self.line, key_lines={k: self.line for k in out}))
                 key = self.value().value
                 self._skip()
                 if self.text[self.pos:self.pos + 1] != ":":

@@ -6,7 +6,8 @@ is almost always a typo or a namespace slip, not an interface. Two names are
 near misses when, with compatible message types,
 
 * they are within a small edit distance (1 for names shorter than
-  :data:`LONG_NAME` characters, 2 otherwise), or
+  :data:`LONG_NAME` characters, 2 otherwise, 1 again past
+  :data:`MAX_DISTANCE_2_NAME`; none past :data:`MAX_HINTED_NAME`), or
 * they differ only by namespace: the same last component
   (``/robot1/scan`` vs ``/scan``; a forgotten or extra leading ``/`` in code
   shows up this way once names are resolved);
@@ -28,6 +29,11 @@ from .topics import Endpoint, types_compatible
 LONG_NAME = 10
 #: The largest edit distance any lookup tolerates (that of long names).
 MAX_DISTANCE = 2
+#: The deletion index grows with the cube of a name's length at distance 2 (400 names of a
+#: few hundred characters took a minute and gigabytes): names longer than this are matched
+#: at distance 1 only, and names longer than :data:`MAX_HINTED_NAME` (which rcl rejects) get no hint.
+MAX_DISTANCE_2_NAME = 64
+MAX_HINTED_NAME = 256
 
 _NUMBER = re.compile(r"\d+")
 
@@ -52,6 +58,11 @@ def _deletions(word: str, depth: int) -> set[str]:
     return variants
 
 
+def _depth(name: str) -> int:
+    """The edit distance indexed and tolerated for ``name`` (see :data:`MAX_DISTANCE_2_NAME`)."""
+    return MAX_DISTANCE if len(name) <= MAX_DISTANCE_2_NAME else 1
+
+
 @dataclass(frozen=True)
 class NearMiss:
     """The dangling peer name a dangling end probably meant, and where that peer is."""
@@ -72,17 +83,17 @@ class NearMissFinder:
         self._peers = dangling_peers
         self._by_variant: dict[str, set[str]] = defaultdict(set)
         self._by_basename: dict[str, list[str]] = defaultdict(list)
-        for name in sorted(dangling_peers):
-            for variant in _deletions(name, MAX_DISTANCE):
+        for name in sorted(n for n in dangling_peers if len(n) <= MAX_HINTED_NAME):
+            for variant in _deletions(name, _depth(name)):
                 self._by_variant[variant].add(name)
             self._by_basename[_basename(name)].append(name)
 
     def find(self, endpoint: Endpoint) -> NearMiss | None:
         """The best near miss for ``endpoint`` (closest name first, then alphabetical), if any."""
         name = endpoint.entity.name
-        if name is None:
+        if name is None or len(name) > MAX_HINTED_NAME:
             return None
-        limit = 1 if len(name) < LONG_NAME else MAX_DISTANCE
+        limit = 1 if len(name) < LONG_NAME else _depth(name)
         candidates: dict[str, int] = {}
         for variant in _deletions(name, limit):
             for other in self._by_variant.get(variant, ()):
