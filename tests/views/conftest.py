@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import os
 import shutil
-from pathlib import Path
 from typing import Iterator
 
 import pytest
@@ -39,14 +38,3 @@ def browser() -> Iterator[object]:
         yield driver
     finally:
         driver.quit()
-
-
-def open_page(driver: object, page: Path) -> None:
-    """Load ``page`` and drain the console log, so a test sees only what its page logged."""
-    driver.get_log("browser")  # type: ignore[attr-defined]
-    driver.get(page.resolve().as_uri())  # type: ignore[attr-defined]
-
-
-def console_errors(driver: object) -> list[str]:
-    return [entry["message"] for entry in driver.get_log("browser")  # type: ignore[attr-defined]
-            if entry["level"] == "SEVERE"]

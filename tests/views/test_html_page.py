@@ -16,8 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import console_errors, open_page
-from fleet import NODES_PER_PACKAGE, PACKAGES, write_fleet
+from .browser import console_errors, open_page
+from .fleet import NODES_PER_PACKAGE, PACKAGES, write_fleet
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import console_errors, open_page
+from .browser import console_errors, open_page
 
 from flake8_rosgraph.findings import Finding
 from flake8_rosgraph.graph.mermaid import to_mermaid
@@ -106,7 +106,7 @@ def test_mermaid_parser_accepts_the_output(browser, tmp_path):
 
 
 def test_launch_option_shows_only_what_the_launch_file_starts(tmp_path):
-    from fleet import write_fleet
+    from .fleet import write_fleet
     write_fleet(tmp_path)
     launch = tmp_path / "src" / "control" / "launch" / "control.launch.py"
     shown = json.loads(run_cli(str(tmp_path), "--format", "json", "--launch", str(launch)))
