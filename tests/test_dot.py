@@ -16,6 +16,7 @@ import pytest
 
 from flake8_rosgraph.graph.dot import to_dot
 from flake8_rosgraph.graph.model import Entity, Location, RosGraph, RosNode
+from flake8_rosgraph.rules.exempt import ExemptNames
 
 QUOTED = r'"(?:[^"\\]|\\.)*"'
 VERTEX_RE = re.compile(rf"^  ({QUOTED}) \[(.*)\];$")
@@ -36,6 +37,7 @@ def attrs_of(text: str | None) -> dict[str, str]:
 class Parsed:
     vertices: dict[str, dict[str, str]] = field(default_factory=dict)
     edges: dict[tuple[str, str], dict[str, str]] = field(default_factory=dict)
+    legend: list[str] = field(default_factory=list)
 
     def vertex(self, label: str) -> tuple[str, dict[str, str]]:
         """The (id, attributes) of the only vertex whose first label line is ``label``."""
@@ -53,7 +55,12 @@ def parse(text: str) -> Parsed:
     assert lines[-1] == "}" and text.endswith("}\n")
     assert all(line.startswith("//") for line in lines[:start])
     parsed = Parsed()
-    for line in lines[start + 1:-1]:
+    body = lines[start + 1:-1]
+    if "  subgraph cluster_legend {" in body:
+        first = body.index("  subgraph cluster_legend {")
+        last = body.index("  }", first)
+        parsed.legend, body = body[first + 1:last], body[:first] + body[last + 1:]
+    for line in body:
         if line.startswith(("  graph [", "  node [")):
             continue
         edge = EDGE_RE.match(line)
@@ -146,10 +153,11 @@ def test_services_actions_and_clients():
     parsed = parse(to_dot(graph))
     assert parsed.vertex("/add")[1]["shape"] == "component"
     assert parsed.vertex("/fib")[1]["shape"] == "box3d"
-    assert parsed.edge("/server", "/add") == {}
-    assert parsed.edge("/add", "/caller") == {"style": "dashed"}
-    assert parsed.edge("/server", "/fib") == {}
-    assert parsed.edge("/fib", "/caller") == {"style": "dashed"}
+    # requests flow from the client through the service to the server
+    assert parsed.edge("/add", "/server") == {}
+    assert parsed.edge("/caller", "/add") == {"style": "dashed"}
+    assert parsed.edge("/fib", "/server") == {}
+    assert parsed.edge("/caller", "/fib") == {"style": "dashed"}
 
 
 def test_same_name_as_topic_and_service_are_distinct_vertices():
@@ -170,7 +178,8 @@ def test_unknown_names_share_one_dashed_box_per_kind():
     assert all(attrs["style"] == "dashed" and "fillcolor" not in attrs for attrs in unknown.values())
     topic_box = next(key for key, attrs in unknown.items() if attrs["shape"] == "box")
     touching = sorted((s, t) for s, t in parsed.edges if topic_box in (s, t))
-    assert touching == [("node:/a", topic_box), ("node:/b", topic_box), (topic_box, "node:/b")]
+    a, b = "node:/a@pkg/nodes.py", "node:/b@pkg/nodes.py"
+    assert touching == [(a, topic_box), (b, topic_box), (topic_box, b)]
     # an unknown name is no evidence of a loop
     assert all("color" not in parsed.edges[pair] for pair in touching)
 
@@ -184,12 +193,31 @@ def test_nodes_with_unknown_names_stay_apart():
     assert parsed.vertex("/t")[1]["fillcolor"] == "yellow"
 
 
-def test_nodes_sharing_a_fqn_are_merged():
+def test_nodes_sharing_a_fqn_in_one_program_are_merged():
     graph = RosGraph([node("twin", pub("/t"), ns="/ns", line=1), node("twin", sub("/t"), ns="/ns", line=2)])
     parsed = parse(to_dot(graph))
     key, _ = parsed.vertex("/ns/twin")
     assert sorted(parsed.edges) == [(key, "topic:/t"), ("topic:/t", key)]
     assert all(attrs == {"color": "red"} for attrs in parsed.edges.values())
+
+
+def test_nodes_sharing_a_fqn_in_different_programs_stay_apart():
+    talker = RosNode("talker", "/", Location("demo_a/talker.py", 5, 9), entities=[pub("/chatter")])
+    other = RosNode("talker", "/", Location("demo_b/talker.py", 7, 9), entities=[pub("/chatter")])
+    parsed = parse(to_dot(RosGraph([talker, other])))
+    talkers = sorted(key for key, attrs in parsed.vertices.items() if attrs["label"] == "/talker")
+    assert talkers == ["node:/talker@demo_a/talker.py", "node:/talker@demo_b/talker.py"]
+    assert sorted(parsed.edges) == [(key, "topic:/chatter") for key in talkers]
+
+
+def test_infrastructure_names_are_subdued():
+    graph = RosGraph([node("robot", pub("/tf"), pub("/odom"), Entity("clients", "/planner/get_parameters", loc(3)))])
+    parsed = parse(to_dot(graph, exempt=ExemptNames.build()))
+    for name in ("/tf", "/planner/get_parameters"):
+        key, attrs = parsed.vertex(name)
+        assert (attrs["fillcolor"], attrs["fontcolor"]) == ("gray92", "gray60")
+        assert all(a.get("color") == "gray60" for pair, a in parsed.edges.items() if key in pair)
+    assert parsed.vertex("/odom")[1]["fillcolor"] == "orange"  # a real orphan stays loud
 
 
 def test_timers_and_parameters_in_the_node_label():
@@ -215,10 +243,10 @@ def test_odd_names_are_escaped():
     graph = RosGraph([node(odd_node, pub(odd_topic), sub("/plain"))])
     text = to_dot(graph)
     parsed = parse(text)
-    assert parsed.vertex("/" + odd_node)[0] == "node:/" + odd_node
+    assert parsed.vertex("/" + odd_node)[0] == "node:/" + odd_node + "@pkg/nodes.py"
     key, attrs = parsed.vertex("/a\\l")
     assert key == "topic:" + odd_topic and attrs["label"] == odd_topic
-    assert (f"node:/{odd_node}", f"topic:{odd_topic}") in parsed.edges
+    assert (f"node:/{odd_node}@pkg/nodes.py", f"topic:{odd_topic}") in parsed.edges
     # every statement stays on one line, and no raw Graphviz escape survives
     assert "\\N" not in text.replace("\\\\", "")
     assert len(text.splitlines()) == text.count("\n")
@@ -228,7 +256,8 @@ def test_empty_graph():
     text = to_dot(RosGraph())
     parsed = parse(text)
     assert parsed.vertices == {} and parsed.edges == {}
-    assert "legend" in text.lower()
+    labels = [attrs_of(line)["label"] for line in parsed.legend if "->" not in line]
+    assert labels[:3] == ["Legend", "ROS node\n(timers, parameters)", "topic"]
 
 
 @pytest.mark.slow
@@ -240,4 +269,6 @@ def test_graphviz_accepts_the_output():
         ["dot", "-Tplain"], input=to_dot(graph), capture_output=True, text=True, check=True, timeout=60,
     )
     drawn = [line for line in result.stdout.splitlines() if line.startswith("node ")]
-    assert len(drawn) == len(parse(to_dot(graph)).vertices) == 4 + 8 + 1 + 2
+    parsed = parse(to_dot(graph))
+    assert len(parsed.vertices) == 4 + 8 + 1 + 2
+    assert len(drawn) == len(parsed.vertices) + len([line for line in parsed.legend if "->" not in line]) - 1

@@ -20,8 +20,7 @@ from .options import TRUE_WORDS
 
 def _graph(args: argparse.Namespace) -> int:
     from .analysis import build_graph
-    from .graph.dot import to_dot
-    from .launch.api import apply, graph_to_json_obj, system_to_json
+    from .launch.api import graph_to_json_obj, system_to_json
 
     root = Path(args.path)
     if not root.exists():
@@ -33,22 +32,34 @@ def _graph(args: argparse.Namespace) -> int:
             continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(escape_text(f"{where}{diag.severity}: {diag.message}"), file=sys.stderr)
-    shown = graph
+    system = None
     if args.launch:
         system = _find_system(graph, root, Path(args.launch))
         if system is None:
             print(f"flake8-rosgraph: error: {args.launch} is not a launch file of {args.path}",
                   file=sys.stderr)
             return 2
-        shown = apply(graph, system)
-        shown.diagnostics = graph.diagnostics
-    if args.format == "dot":
-        text = to_dot(shown)
-    else:
-        obj = graph_to_json_obj(shown)
-        if not args.launch:
+        if not system.complete:
+            print(escape_text(f"{system.launch_file}: warning: the launch file could not be followed completely; "
+                              "what it starts may be missing (see \"problems\" in the JSON)"), file=sys.stderr)
+    if args.format == "json":
+        if system is not None:
+            from .render import launched_only
+            shown = launched_only(graph, system)
+            shown.diagnostics = graph.diagnostics
+            obj = graph_to_json_obj(shown)
+        else:
+            obj = graph_to_json_obj(graph)
             obj["systems"] = [system_to_json(s) for s in graph.systems]
         text = json_safe(json.dumps(obj, indent=1, ensure_ascii=False)) + "\n"
+    else:
+        from .render import Renderer, launched_only
+        renderer = Renderer(root, graph)
+        if args.format == "html":
+            text = renderer.html(system)
+        else:
+            shown = launched_only(graph, system) if system is not None else graph
+            text = renderer.dot(shown) if args.format == "dot" else renderer.mermaid(shown)
     if args.output:
         try:
             Path(args.output).write_text(text, encoding="utf-8", errors="surrogateescape")
@@ -76,14 +87,16 @@ def make_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     graph = sub.add_parser("graph", help="print the ROS computation graph of PATH")
     graph.add_argument("path", help="workspace folder (or a single file)")
-    graph.add_argument("--format", choices=("json", "dot"), default="json")
+    graph.add_argument("--format", choices=("json", "dot", "mermaid", "html"), default="json",
+                       help="json (contract rosgraph/1), dot (Graphviz), mermaid (Markdown, pull requests) "
+                            "or html (one self-contained interactive page)")
     graph.add_argument("--output", "-o", help="write to this file instead of stdout")
     graph.add_argument("--stubs", action="append", default=[], metavar="FILE",
                        help="extra library model (TOML); repeatable")
     graph.add_argument("--verbose", "-v", action="store_true",
                        help="also print informational diagnostics (analysis precision bounds)")
     graph.add_argument("--launch", metavar="FILE",
-                       help="print the system this launch file starts (names, namespaces and "
+                       help="show only the system this launch file starts (names, namespaces and "
                             "remappings applied) instead of the code-level graph")
     graph.set_defaults(run=_graph)
     check_cli.add_parser(sub)
