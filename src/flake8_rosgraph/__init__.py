@@ -1,3 +1,3 @@
 """flake8-rosgraph: the ROS 2 computation graph of rclpy code, found statically."""
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"

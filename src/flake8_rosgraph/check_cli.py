@@ -7,7 +7,14 @@ the off-by-default rules opted in the same way (``--select ROS010``). The same
 environment variables apply (``ROSGRAPH_ROOT``, ``ROSGRAPH_STUBS``, …); command
 line flags win over them. It shares the workspace cache with the plugin.
 
-Exit status: 0 no findings, 1 findings, 2 usage or internal error.
+It reads the configuration the plugin reads (:mod:`.config`: ``[flake8]`` in
+``setup.cfg``/``tox.ini``/``.flake8``, plus ``[tool.flake8-rosgraph]`` in
+``pyproject.toml``), including ``per-file-ignores`` and ``# flake8: noqa``
+file markers. ``--baseline FILE`` hides the findings recorded by
+``--write-baseline FILE`` (matched by fingerprint, so they survive line
+shifts), to adopt the tool on a workspace with old findings.
+
+Exit status: 0 no findings (or ``--exit-zero``), 1 findings, 2 usage or internal error.
 """
 from __future__ import annotations
 
@@ -21,12 +28,14 @@ from pathlib import Path
 from typing import Any
 
 from .cache import workspace_report
+from .config import ConfigError, FileConfig, load_config
 from .escaping import escape_text, json_safe
+from .findings import Finding, display_path, localised_message
+from .fingerprints import Ranks, SourceLines, finding_fingerprint, without_line_numbers
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, root_problem
 from .root import discover_root, find_vcs_root
 from .safe_io import MAX_SOURCE_BYTES, read_text
-from .findings import Finding
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 CHECK_CATEGORY = "flake8-rosgraph/check"
@@ -41,7 +50,9 @@ def add_parser(subparsers: Any) -> None:
     )
     parser.add_argument("paths", nargs="+", type=Path, metavar="PATH",
                         help="files or directories whose findings to report")
-    parser.add_argument("--format", choices=("text", "json"), default="text", help="terminal output format")
+    parser.add_argument("--format", choices=("text", "json", "github"), default="text",
+                        help="terminal output: text (path:line:col: CODE message), json, or github "
+                             "(workflow commands that annotate a pull request)")
     parser.add_argument("--sarif", type=Path, metavar="FILE", help="also write the findings as SARIF 2.1.0")
     parser.add_argument("--root", type=Path, help="workspace root (default: discovered; env ROSGRAPH_ROOT)")
     parser.add_argument("--stubs", metavar="FILES", help="comma-separated extra library model files")
@@ -52,6 +63,11 @@ def add_parser(subparsers: Any) -> None:
     parser.add_argument("--extend-select", metavar="CODES", help="code prefixes to report in addition")
     parser.add_argument("--ignore", metavar="CODES", help="comma-separated code prefixes not to report")
     parser.add_argument("--debug", action="store_true", help="re-raise internal errors (env ROSGRAPH_DEBUG)")
+    parser.add_argument("--exit-zero", action="store_true", help="exit 0 even when there are findings")
+    parser.add_argument("--baseline", type=Path, metavar="FILE",
+                        help="do not report the findings recorded in FILE (see --write-baseline)")
+    parser.add_argument("--write-baseline", type=Path, metavar="FILE",
+                        help="record the current findings in FILE (then adopt with --baseline FILE)")
     parser.set_defaults(run=run)
 
 
@@ -97,12 +113,31 @@ def _noqa_suppresses(line: str | None, code: str) -> bool:
 
 
 class _Selection:
-    """``--select``/``--extend-select``/``--ignore`` over ROS codes, as in flake8 (longest match wins)."""
+    """``--select``/``--extend-select``/``--ignore`` over ROS codes, as in flake8 (longest match wins).
 
-    def __init__(self, args: argparse.Namespace, rules: Any) -> None:
-        self.select = (_codes(args.select) or ["ROS"]) + _codes(args.extend_select)
-        self.ignore = _codes(args.ignore)
-        self.codes = CodeFilter.build(_codes(args.select) + _codes(args.extend_select), rules)
+    A flag given on the command line wins over the configuration files' value.
+    """
+
+    def __init__(self, args: argparse.Namespace, rules: Any, config: FileConfig) -> None:
+        def pick(name: str) -> list[str]:
+            given = _codes(getattr(args, name))
+            return given if given else list(config.values.get(name, []))
+
+        select, extend = pick("select"), pick("extend_select")
+        self.select = (select or ["ROS"]) + extend
+        self.ignore = pick("ignore") + list(config.values.get("extend_ignore", []))
+        self.codes = CodeFilter.build(select + extend, rules)
+        self.given = select + extend + self.ignore
+
+    def unknown(self, rules: Any) -> list[str]:
+        """Given codes that name no rule of this tool (``ROS999``, ``ROS01X``): a typo that selects nothing.
+
+        flake8 rejects a malformed code; here every code is one of ours, so an
+        entry that is not a prefix of any rule code is refused, from the command
+        line or from a configuration file alike.
+        """
+        codes = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
+        return sorted({c for c in self.given if not any(code.startswith(c) for code in codes)})
 
     def __call__(self, code: str) -> bool:
         selected = max((len(s) for s in self.select if code.startswith(s)), default=-1)
@@ -111,19 +146,7 @@ class _Selection:
 
 
 class UserError(Exception):
-    """A mistake in the command line or the environment: a one-line message, exit status 2."""
-
-
-def _unknown_codes(args: argparse.Namespace, rules: Any) -> list[str]:
-    """Entries of ``--select``/``--extend-select``/``--ignore`` that name no rule of this tool.
-
-    flake8 rejects a malformed code; here every code is one of ours, so an entry
-    that is not a prefix of any rule code (``ROS999``, ``ROS01X``) is a typo that
-    would silently select nothing.
-    """
-    codes = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
-    given = _codes(args.select) + _codes(args.extend_select) + _codes(args.ignore)
-    return sorted({c for c in given if not any(code.startswith(c) for code in codes)})
+    """A mistake in the command line, the configuration or the environment: one line, exit status 2."""
 
 
 def _check_root(settings: Settings, args: argparse.Namespace) -> None:
@@ -134,23 +157,49 @@ def _check_root(settings: Settings, args: argparse.Namespace) -> None:
     if settings.root is None:
         return
     root = Path(os.path.abspath(settings.root))
-    paths: list[Path] = list(args.paths)
-    outside = [str(p) for p in paths if not _is_under(Path(os.path.abspath(p)), root)]
+    outside = [str(p) for p in args.paths if not _is_under(Path(os.path.abspath(p)), root)]
     if outside:
         raise UserError(f"{', '.join(outside)}: not inside the workspace root {settings.root}")
 
 
-def _settings(args: argparse.Namespace) -> Settings:
+def _settings(args: argparse.Namespace, config: FileConfig) -> Settings:
+    """Command line first, then the configuration files, then the environment."""
     given = {"root": args.root, "stubs": args.stubs, "external_topics": args.external_topics,
-             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug}
-    return Settings.resolve({k: (str(v) if isinstance(v, Path) else v) for k, v in given.items()}, os.environ)
+             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug or None}
+    merged = {key: (str(value) if isinstance(value, Path) else value) if value is not None
+              else config.values.get(key) for key, value in given.items()}
+    return Settings.resolve(merged, os.environ)
+
+
+def _file_noqa(path: Path) -> bool:
+    """Whether flake8 skips the whole file (a line that is only ``# flake8: noqa``)."""
+    from flake8.defaults import NOQA_FILE
+
+    try:
+        lines = read_text(path, None, MAX_SOURCE_BYTES).splitlines()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return any(NOQA_FILE.match(line) for line in lines)
+
+
+class _Noqa:
+    """``# noqa`` comments and ``# flake8: noqa`` file markers, each file read once."""
+
+    def __init__(self) -> None:
+        self._lines: dict[Path, dict[int, str] | None] = {}  # None: the whole file is skipped
+
+    def hides(self, path: Path, line: int, code: str) -> bool:
+        if path not in self._lines:
+            self._lines[path] = None if _file_noqa(path) else _noqa_lines(path)
+        lines = self._lines[path]
+        return lines is None or _noqa_suppresses(lines.get(line), code)
 
 
 def _is_under(path: Path, target: Path) -> bool:
     return path == target or target in path.parents
 
 
-def _collect(settings: Settings, paths: list[Path], wanted: _Selection
+def _collect(settings: Settings, paths: list[Path], wanted: _Selection, config: FileConfig
              ) -> tuple[list[tuple[Path, Finding]], list[tuple[Path, Diagnostic]]]:
     findings: set[tuple[Path, Finding]] = set()
     diagnostics: set[tuple[Path, Diagnostic]] = set()
@@ -159,39 +208,29 @@ def _collect(settings: Settings, paths: list[Path], wanted: _Selection
         report = workspace_report(root, settings)
         base = root if root.is_dir() else root.parent  # a lone file is its own root
         diagnostics.update((base, d) for d in report.diagnostics)
-        noqa: dict[Path, dict[int, str]] = {}
+        noqa = _Noqa()
         for finding in report.findings:
             path = base / finding.location.path
-            if not (_is_under(path, target) and wanted(finding.code)):
+            if not (_is_under(path, target) and wanted(finding.code)) or config.ignored_in(path, finding.code):
                 continue
-            if path not in noqa:
-                noqa[path] = _noqa_lines(path)
-            if not _noqa_suppresses(noqa[path].get(finding.location.line), finding.code):
+            if not noqa.hides(path, finding.location.line, finding.code):
                 findings.add((base, finding))
     return (sorted(findings, key=lambda rf: (str(rf[0] / rf[1].location.path), rf[1])),
             sorted(diagnostics, key=lambda rd: (str(rd[0]), rd[1])))
 
 
-def _display(path: Path) -> str:
-    """A path as the user would type it: relative to the current directory when inside it."""
-    try:
-        return path.relative_to(Path.cwd()).as_posix()
-    except ValueError:
-        return path.as_posix()
-
-
 def _json(findings: list[tuple[Path, Finding]], diagnostics: list[tuple[Path, Diagnostic]]) -> str:
     def where(root: Path, location: Any) -> dict[str, Any]:
-        return {"path": _display(root / location.path), "line": location.line, "column": location.column}
+        return {"path": display_path(root / location.path), "line": location.line, "column": location.column}
 
     data = {
         "findings": [
-            {"code": f.code, "message": f.message, **where(root, f.location),
+            {"code": f.code, "message": localised_message(root, f), **where(root, f.location),
              "related": [{**where(root, loc), "label": label} for loc, label in f.related]}
             for root, f in findings
         ],
         "diagnostics": [
-            {"path": _display(root / d.path), "line": d.line, "message": d.message, "severity": d.severity}
+            {"path": display_path(root / d.path), "line": d.line, "message": d.message, "severity": d.severity}
             for root, d in diagnostics
         ],
     }
@@ -199,35 +238,120 @@ def _json(findings: list[tuple[Path, Finding]], diagnostics: list[tuple[Path, Di
 
 
 def _write_sarif(target: Path, findings: list[tuple[Path, Finding]],
-                 diagnostics: list[tuple[Path, Diagnostic]], fallback_root: Path) -> None:
+                 diagnostics: list[tuple[Path, Diagnostic]], fallback_root: Path, successful: bool) -> None:
     from . import sarif
 
     roots = sorted({root for root, _ in findings} | {root for root, _ in diagnostics}) or [fallback_root]
     log = sarif.sarif_log(
         (sarif.finding_problem(root, f) for root, f in findings), sarif.catalogue(),
         srcroot=find_vcs_root(roots[0]) or roots[0], category=CHECK_CATEGORY, diagnostics=diagnostics,
+        successful=successful,
     )
     sarif.write(target, log)
 
 
+BASELINE_SCHEMA = "flake8-rosgraph-baseline/1"
+#: GitHub workflow command for each rule level.
+_GITHUB_LEVEL = {"error": "error", "warning": "warning", "note": "notice"}
+
+
+def _fingerprints(findings: list[tuple[Path, Finding]]) -> list[str]:
+    """Each finding's identity (see :mod:`.fingerprints`), in the order given."""
+    lines, ranks, out = SourceLines(), Ranks(), []
+    for root, f in findings:
+        text = lines.text(root / f.location.path, f.location.line)
+        rank = ranks.next((str(root), f.code, f.location.path, without_line_numbers(f.message), text))
+        out.append(finding_fingerprint(f.code, f.location.path, f.message, text, rank,
+                                       [(loc.path, label) for loc, label in f.related]))
+    return out
+
+
+def _read_baseline(path: Path) -> set[str]:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        if data.get("schema") != BASELINE_SCHEMA:
+            raise ValueError(f"not a {BASELINE_SCHEMA} file")
+        return {entry["fingerprint"] for entry in data["findings"]}
+    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError) as exc:
+        raise ConfigError(f"{path}: cannot read the baseline: {exc}") from None
+
+
+def _write_baseline(path: Path, findings: list[tuple[Path, Finding]], prints: list[str]) -> None:
+    entries = [{"fingerprint": fp, "code": f.code, "path": f.location.path, "message": f.message}
+               for (_, f), fp in zip(findings, prints)]
+    entries.sort(key=lambda e: (e["path"], e["code"], e["message"], e["fingerprint"]))
+    text = json.dumps({"schema": BASELINE_SCHEMA, "findings": entries}, indent=1, ensure_ascii=False) + "\n"
+    path.write_text(text, encoding="utf-8")
+
+
+def _github_escape(text: str, property_value: bool = False) -> str:
+    """GitHub workflow command escaping (data: ``%``, CR, LF; property values also ``:`` and ``,``)."""
+    text = text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    return text.replace(":", "%3A").replace(",", "%2C") if property_value else text
+
+
+def _print_findings(args: argparse.Namespace, findings: list[tuple[Path, Finding]],
+                    diagnostics: list[tuple[Path, Diagnostic]]) -> None:
+    if args.format == "json":
+        print(_json(findings, diagnostics))
+        return
+    if args.format == "github":
+        from .rules import RULES
+
+        levels = {rule.code: rule.level for rule in RULES}
+        for root, f in findings:
+            loc = f.location
+            props = ",".join(f"{key}={_github_escape(str(value), True)}" for key, value in (
+                ("file", display_path(root / loc.path)), ("line", loc.line), ("col", loc.column), ("title", f.code)))
+            print(escape_text(f"::{_GITHUB_LEVEL.get(levels.get(f.code, 'warning'), 'warning')} {props}::"
+                              f"{_github_escape(f.code + ' ' + localised_message(root, f))}"))
+        return
+    for root, f in findings:
+        loc = f.location
+        print(escape_text(f"{display_path(root / loc.path)}:{loc.line}:{loc.column}: "
+                          f"{f.code} {localised_message(root, f)}"))
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the check; print findings; return the exit status."""
-    settings = _settings(args)
-    missing = [str(p) for p in args.paths if not p.exists()]
+    settings = Settings()
     try:
+        try:
+            config = load_config(Path.cwd())
+        except ConfigError as exc:
+            raise UserError(str(exc)) from None
+        settings = _settings(args, config)
+        missing = [str(p) for p in args.paths if not p.exists()]
         if missing:
             raise UserError(f"no such file or directory: {', '.join(missing)}")
         from .rules import RULES
 
-        unknown = _unknown_codes(args, RULES)
+        wanted = _Selection(args, RULES, config)
+        unknown = wanted.unknown(RULES)
         if unknown:
             raise UserError(f"unknown rule code(s): {', '.join(unknown)} "
                             f"(codes: {', '.join(rule.code for rule in RULES)})")
         _check_root(settings, args)
-        findings, diagnostics = _collect(settings, list(args.paths), _Selection(args, RULES))
+        baseline_file = args.baseline or (Path(config.values["baseline"]) if "baseline" in config.values else None)
+        try:
+            baseline = _read_baseline(baseline_file) if baseline_file is not None else set()
+        except ConfigError as exc:
+            raise UserError(str(exc)) from None
+        findings, diagnostics = _collect(settings, list(args.paths), wanted, config)
+        prints = _fingerprints(findings)
+        if args.write_baseline is not None:
+            try:
+                _write_baseline(args.write_baseline, findings, prints)
+            except OSError as exc:
+                raise UserError(f"cannot write the baseline {args.write_baseline}: {exc.strerror or exc}") from exc
+        findings = [pair for pair, fp in zip(findings, prints) if fp not in baseline]
+        # An error diagnostic (broken stub, an error the analysis caught) means an
+        # incomplete graph, whose silence proves nothing: that is not a clean run.
+        errors = [(root, d) for root, d in diagnostics if d.severity == "error"]
         if settings.sarif is not None:
             try:
-                _write_sarif(settings.sarif, findings, diagnostics, Path(os.path.abspath(args.paths[0])))
+                _write_sarif(settings.sarif, findings, diagnostics, Path(os.path.abspath(args.paths[0])),
+                             successful=not errors)
             except OSError as exc:
                 raise UserError(f"cannot write the SARIF file {settings.sarif}: {exc.strerror or exc}") from exc
     except UserError as exc:
@@ -242,18 +366,10 @@ def run(args: argparse.Namespace) -> int:
                           f"({type(exc).__name__}: {exc}); rerun with --debug for the traceback"),
               file=sys.stderr)
         return EXIT_ERROR
-    if args.format == "json":
-        print(_json(findings, diagnostics))
-    else:
-        for root, f in findings:
-            loc = f.location
-            print(escape_text(f"{_display(root / loc.path)}:{loc.line}:{loc.column}: {f.code} {f.message}"))
-    # An error diagnostic (broken stub, an error the analysis caught) means an
-    # incomplete graph, whose silence proves nothing: that is not a clean run.
-    errors = [(root, d) for root, d in diagnostics if d.severity == "error"]
+    _print_findings(args, findings, diagnostics)
     for root, d in errors:
-        where = f"{_display(root / d.path)}:{d.line}: " if d.path else ""
+        where = f"{display_path(root / d.path)}:{d.line}: " if d.path else ""
         print(escape_text(f"flake8-rosgraph check: {INTERNAL_ERROR_CODE} {where}{d.message}"), file=sys.stderr)
     if errors:
         return EXIT_ERROR
-    return EXIT_FINDINGS if findings else EXIT_CLEAN
+    return EXIT_FINDINGS if findings and not args.exit_zero else EXIT_CLEAN

@@ -80,6 +80,39 @@ def _find_system(graph, root: Path, launch_file: Path):
     return next((s for s in graph.systems if s.launch_file == wanted), None)
 
 
+def _rules(args: argparse.Namespace) -> int:
+    from .rules import RULES
+
+    rows = [(r.code, r.name, r.level, "on" if r.default_enabled else "off", r.summary) for r in RULES]
+    if args.format == "json":
+        keys = ("code", "name", "level", "default", "summary")
+        print(json.dumps([dict(zip(keys, row)) for row in rows], indent=1))
+        return 0
+    widths = [max(len(row[i]) for row in rows + [("code", "name", "level", "default", "")]) for i in range(4)]
+    print("  ".join(title.ljust(width) for title, width in zip(("code", "name", "level", "default"), widths))
+          + "  fires when")
+    for row in rows:
+        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)) + "  " + row[4])
+    return 0
+
+
+def _explain(args: argparse.Namespace) -> int:
+    from .rules import RULES
+    from .rules.docs import rule_doc
+
+    code = args.code.strip().upper()
+    rule = next((r for r in RULES if r.code == code or r.name == args.code.strip()), None)
+    if rule is None:
+        known = ", ".join(r.code for r in RULES)
+        print(f"flake8-rosgraph explain: unknown rule '{args.code}' (known: {known})", file=sys.stderr)
+        return 2
+    doc = rule_doc(rule)
+    state = "enabled" if doc.default_enabled else "disabled (opt in with --extend-select " + doc.code + ")"
+    print(f"# {doc.code} {doc.name}\n\nLevel: {doc.level}; {state} by default.\n\n{doc.summary}\n")
+    print(doc.markdown)
+    return 0
+
+
 def make_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="flake8-rosgraph",
                                      description="Static ROS 2 computation graph of rclpy code.")
@@ -100,6 +133,12 @@ def make_parser() -> argparse.ArgumentParser:
                             "remappings applied) instead of the code-level graph")
     graph.set_defaults(run=_graph)
     check_cli.add_parser(sub)
+    rules = sub.add_parser("rules", help="list the rules: code, name, level, enabled by default")
+    rules.add_argument("--format", choices=("text", "json"), default="text")
+    rules.set_defaults(run=_rules)
+    explain = sub.add_parser("explain", help="print a rule's documentation (what, why, example, fix)")
+    explain.add_argument("code", help="rule code (ROS003) or name (subscription-without-publisher)")
+    explain.set_defaults(run=_explain)
     return parser
 
 

@@ -6,6 +6,7 @@ read back from the cache) imports neither the rules nor the analyser.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from .graph.model import Location
 
@@ -26,3 +27,20 @@ class RuleConfig:
 
     #: Topics/services/actions handled outside the workspace, on top of the built-in exempt list.
     external_names: frozenset[str] = field(default_factory=frozenset)
+
+
+def display_path(path: Path) -> str:
+    """A path as the user would type it: relative to the current folder when inside it."""
+    try:
+        return path.relative_to(Path.cwd()).as_posix()
+    except ValueError:
+        return path.as_posix()
+
+
+def localised_message(root: Path, finding: Finding) -> str:
+    """The message with the other ends' workspace-relative ``path:line`` made relative to the current folder."""
+    text = finding.message
+    for location, _ in finding.related:
+        text = text.replace(f"{location.path}:{location.line}",
+                            f"{display_path(root / location.path)}:{location.line}")
+    return text

@@ -36,7 +36,7 @@ from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
                       root_problem)
 from .root import discover_root, find_vcs_root
-from .findings import Finding
+from .findings import Finding, localised_message
 
 #: A flake8 plugin entry name that is a code prefix (``E``, ``F``, ``ROS``).
 _CODE_PREFIX = re.compile(r"^[A-Z]{1,3}[0-9]{0,3}$")
@@ -193,9 +193,10 @@ class RosGraphChecker:
             return
         for error in errors:
             yield 1, 0, escape_text(_analysis_error_text(error)), type(self)
+        root = _root_for(run, Path(os.path.abspath(self.filename)))
         for finding in findings:
-            yield (finding.location.line, finding.location.column - 1,
-                   escape_text(f"{finding.code} {finding.message}"), type(self))
+            text = escape_text(f"{finding.code} {localised_message(root, finding)}")
+            yield finding.location.line, finding.location.column - 1, text, type(self)
 
 
 # -- the report stage ------------------------------------------------------------------------
@@ -273,10 +274,11 @@ def _report(manager: Any, original: Callable[[Any], Any]) -> Any:
 def _matching_finding(run: _Run, item: _Reported) -> tuple[Path, Finding] | None:
     """The workspace finding behind a reported ROS result, for its related locations."""
     path = Path(os.path.abspath(item.filename))
+    root = _root_for(run, path)
     for finding in findings_in_file(run, item.filename):
         same_place = (finding.location.line, finding.location.column - 1) == (item.line, item.column)
-        if same_place and (finding.code, finding.message) == (item.code, item.text):
-            return _root_for(run, path), finding
+        if same_place and (finding.code, escape_text(localised_message(root, finding))) == (item.code, item.text):
+            return root, finding
     return None
 
 
@@ -297,6 +299,7 @@ def _write_sidecar(run: _Run, reported: list[_Reported], origins: dict[str, Any]
     log = sarif.sarif_log(
         problems, sarif.catalogue(), srcroot=find_vcs_root(cwd) or cwd, category=SIDECAR_CATEGORY,
         origins={prefix: sarif.Origin(*origin) for prefix, origin in origins.items()},
+        successful=not any(item.code == INTERNAL_ERROR_CODE for item in reported),
     )
     sarif.write(run.settings.sarif, log)
 

@@ -18,12 +18,9 @@ This is the only module that imports ``sarif_om`` / ``jschema_to_python``.
 """
 from __future__ import annotations
 
-import hashlib
 import inspect
 import json
 import os
-import re
-from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
@@ -37,9 +34,12 @@ from . import __version__
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE
 from .findings import Finding
+from .fingerprints import Ranks, SourceLines, finding_fingerprint, line_hash, without_line_numbers
 
 TOOL_NAME = "flake8-rosgraph"
 INFORMATION_URI = "https://github.com/flake8-rosgraph/flake8-rosgraph"
+#: Each rule's section of the rules page (the anchor GitHub gives the ``## CODE name`` heading).
+RULES_URI = INFORMATION_URI + "/blob/main/docs/rules.md"
 SCHEMA_URI = "https://json.schemastore.org/sarif-2.1.0.json"
 SRCROOT = "%SRCROOT%"
 FINGERPRINT_KEY = "rosgraphFinding/v1"
@@ -48,7 +48,6 @@ FINGERPRINT_KEY = "rosgraphFinding/v1"
 _SEVERITY = {"error": "error", "warning": "warning", "note": "recommendation"}
 #: Precision when a rule does not declare one: the louder the level, the surer the rule must be.
 _PRECISION = {"error": "high", "warning": "medium", "note": "low"}
-_LINE_REF = re.compile(r"(\.[A-Za-z]+):\d+\b")
 
 
 @dataclass(frozen=True, order=True)
@@ -100,6 +99,7 @@ class RuleInfo:
     enabled: bool = True
     precision: str | None = None
     tags: tuple[str, ...] = ()
+    help_uri: str | None = None
 
 
 def rule_info(rule: Any) -> RuleInfo:
@@ -109,7 +109,7 @@ def rule_info(rule: Any) -> RuleInfo:
         code=rule.code, name=rule.name, level=rule.level, summary=rule.summary,
         doc=inspect.cleandoc(type(rule).__doc__ or rule.summary),
         enabled=bool(rule.default_enabled), precision=getattr(rule, "precision", None),
-        tags=("ros2", family),
+        tags=("ros2", family), help_uri=f"{RULES_URI}#{rule.code.lower()}-{rule.name}",
     )
 
 
@@ -120,7 +120,7 @@ INTERNAL_ERROR_RULE = RuleInfo(
          "## Why is this bad?\nThe ROS graph rules did not run, so their silence proves nothing.\n\n"
          "## Use instead\nRun again with `--rosgraph-debug` (or `ROSGRAPH_DEBUG=1`) to see the "
          "traceback, and report it."),
-    precision="high", tags=("ros2", "tool"),
+    precision="high", tags=("ros2", "tool"), help_uri=INFORMATION_URI + "#reliability",
 )
 
 
@@ -176,6 +176,7 @@ def _descriptor(info: RuleInfo) -> om.ReportingDescriptor:
         short_description=om.MultiformatMessageString(text=info.summary[:1].upper() + info.summary[1:]),
         full_description=om.MultiformatMessageString(text=" ".join(what.split())),
         help=om.MultiformatMessageString(text=_plain(info.doc), markdown=info.doc),
+        help_uri=info.help_uri,
         default_configuration=om.ReportingConfiguration(level=info.level, enabled=info.enabled),
         properties=properties,
     )
@@ -186,7 +187,7 @@ class _Artifacts:
 
     def __init__(self, srcroot: Path) -> None:
         self.srcroot = Path(os.path.abspath(srcroot))
-        self._lines: dict[Path, list[str]] = {}
+        self._lines = SourceLines()
 
     def location(self, path: Path) -> om.ArtifactLocation:
         path = Path(os.path.abspath(path))
@@ -200,28 +201,32 @@ class _Artifacts:
         return self.location(path).uri
 
     def line_text(self, place: Place) -> str:
-        if place.path not in self._lines:
-            try:
-                self._lines[place.path] = place.path.read_text(encoding="utf-8", errors="replace").splitlines()
-            except OSError:
-                self._lines[place.path] = []
-        lines = self._lines[place.path]
-        return lines[place.line - 1].strip() if 0 < place.line <= len(lines) else ""
+        return self._lines.text(place.path, place.line)
+
+    def line_end(self, place: Place) -> int:
+        """The 1-based character column just past the line's last non-blank character."""
+        return len(self._lines.raw(place.path, place.line).rstrip()) + 1
 
 
 def _physical(artifacts: _Artifacts, place: Place) -> om.PhysicalLocation:
+    """The place, its region reaching to the end of the source line (GitHub underlines the region)."""
+    start = max(place.column, 1)
+    end = max(start + 1, artifacts.line_end(place))
     return om.PhysicalLocation(
         artifact_location=artifacts.location(place.path),
-        region=om.Region(start_line=max(place.line, 1), start_column=max(place.column, 1)),
+        region=om.Region(start_line=max(place.line, 1), start_column=start,
+                         end_line=max(place.line, 1), end_column=end),
     )
 
 
-def _fingerprint(artifacts: _Artifacts, problem: Problem, occurrence: int) -> str:
+def _fingerprints(artifacts: _Artifacts, problem: Problem, ranks: Ranks) -> dict[str, str]:
     """Stable across runs and machines: no absolute path, no line number, only what the problem is."""
-    parts = [problem.code, artifacts.uri(problem.place.path), _LINE_REF.sub(r"\1", problem.message),
-             artifacts.line_text(problem.place), str(occurrence)]
-    parts += sorted(f"{artifacts.uri(place.path)}\0{label}" for place, label in problem.related)
-    return hashlib.sha256("\0".join(parts).encode()).hexdigest()[:32]
+    line = artifacts.line_text(problem.place)
+    uri = artifacts.uri(problem.place.path)
+    rank = ranks.next((problem.code, uri, without_line_numbers(problem.message), line))
+    related = [(artifacts.uri(place.path), label) for place, label in problem.related]
+    return {FINGERPRINT_KEY: finding_fingerprint(problem.code, uri, problem.message, line, rank, related),
+            "primaryLocationLineHash": line_hash(line, rank)}
 
 
 def _message(problem: Problem) -> om.Message:
@@ -240,6 +245,38 @@ def _notification(artifacts: _Artifacts, root: Path, diagnostic: Diagnostic) -> 
                            locations=[om.Location(physical_location=_physical(artifacts, place))])
 
 
+def _results(artifacts: _Artifacts, problems: list[Problem], infos: list[RuleInfo]) -> list[om.Result]:
+    index = {info.code: i for i, info in enumerate(infos)}
+    ranks = Ranks()
+    results = []
+    for problem in problems:
+        related = [
+            om.Location(id=i, physical_location=_physical(artifacts, place), message=om.Message(text=label))
+            for i, (place, label) in enumerate(problem.related, 1)
+        ]
+        results.append(om.Result(
+            rule_id=problem.code, rule_index=index[problem.code], level=infos[index[problem.code]].level,
+            message=_message(problem),
+            locations=[om.Location(physical_location=_physical(artifacts, problem.place))],
+            related_locations=related or None,
+            partial_fingerprints=_fingerprints(artifacts, problem, ranks),
+        ))
+    return results
+
+
+def _run(driver: om.ToolComponent, infos: list[RuleInfo], problems: list[Problem], artifacts: _Artifacts,
+         category: str, invocation: om.Invocation) -> om.Run:
+    driver.rules = [_descriptor(info) for info in infos]
+    return om.Run(
+        tool=om.Tool(driver=driver),
+        automation_details=om.RunAutomationDetails(id=f"{category}/"),
+        column_kind="unicodeCodePoints",
+        original_uri_base_ids={SRCROOT: om.ArtifactLocation(uri=artifacts.srcroot.as_uri() + "/")},
+        invocations=[invocation],
+        results=_results(artifacts, problems, infos),
+    )
+
+
 def sarif_log(
     problems: Iterable[Problem],
     rules: Sequence[RuleInfo],
@@ -248,66 +285,47 @@ def sarif_log(
     category: str,
     origins: Mapping[str, Origin] | None = None,
     diagnostics: Iterable[tuple[Path, Diagnostic]] = (),
+    successful: bool = True,
 ) -> dict[str, Any]:
     """The SARIF log (as JSON-ready data) of ``problems``.
 
-    ``rules`` is the catalogue to describe (every ROS rule, whether it fired or
-    not); codes outside it get a :func:`foreign_rule` entry using ``origins``
-    (plugin by code prefix). ``diagnostics`` (workspace root, analysis gap)
-    become tool execution notifications.
+    The first run is ours: its driver describes ``rules`` (every ROS rule,
+    whether it fired or not) and holds their results. Codes outside ``rules``
+    (other flake8 plugins, through the sidecar) go to one run per plugin,
+    found by code prefix in ``origins``, whose driver is that plugin — so code
+    scanning never shows another tool's finding as ours. ``diagnostics``
+    (workspace root, analysis gap) become our run's tool execution
+    notifications; ``successful`` is false only when the tool itself failed.
     """
     origins = origins or {}
     problems = sorted(set(problems))
-    infos = list(rules)
-    known = {info.code for info in infos}
-    for code in sorted({p.code for p in problems} - known):
-        infos.append(foreign_rule(code, _origin_for(code, origins)))
-    index = {info.code: i for i, info in enumerate(infos)}
     artifacts = _Artifacts(srcroot)
-
-    results = []
-    levels = []
-    seen: Counter[tuple[str, str, str, str]] = Counter()
-    for problem in problems:
-        info = infos[index[problem.code]]
-        identity = (problem.code, artifacts.uri(problem.place.path), problem.message,
-                    artifacts.line_text(problem.place))
-        seen[identity] += 1
-        related = [
-            om.Location(id=i, physical_location=_physical(artifacts, place), message=om.Message(text=label))
-            for i, (place, label) in enumerate(problem.related, 1)
-        ]
-        results.append(om.Result(
-            rule_id=problem.code, rule_index=index[problem.code], level=info.level,
-            message=_message(problem),
-            locations=[om.Location(physical_location=_physical(artifacts, problem.place))],
-            related_locations=related or None,
-            partial_fingerprints={FINGERPRINT_KEY: _fingerprint(artifacts, problem, seen[identity])},
-        ))
-        levels.append(info.level)
-
+    ours = list(rules)
+    known = {info.code for info in ours}
     notifications = [_notification(artifacts, root, d) for root, d in
                      sorted(set(diagnostics), key=lambda rd: (str(rd[0]), rd[1]))]
-    run = om.Run(
-        tool=om.Tool(driver=om.ToolComponent(
-            name=TOOL_NAME, semantic_version=__version__, version=__version__,
-            information_uri=INFORMATION_URI, rules=[_descriptor(info) for info in infos],
-        )),
-        automation_details=om.RunAutomationDetails(id=f"{category}/"),
-        column_kind="unicodeCodePoints",
-        original_uri_base_ids={SRCROOT: om.ArtifactLocation(uri=artifacts.srcroot.as_uri() + "/")},
-        invocations=[om.Invocation(execution_successful=True,
-                                   tool_execution_notifications=notifications or None)],
-        results=results,
-    )
-    log = json.loads(to_json(om.SarifLog(version="2.1.0", schema_uri=SCHEMA_URI, runs=[run])))
+    runs = [_run(om.ToolComponent(name=TOOL_NAME, semantic_version=__version__, version=__version__,
+                                  information_uri=INFORMATION_URI),
+                 ours, [p for p in problems if p.code in known], artifacts, category,
+                 om.Invocation(execution_successful=successful, tool_execution_notifications=notifications or None))]
+    by_tool: dict[Origin | None, list[Problem]] = {}
+    for problem in problems:
+        if problem.code not in known:
+            by_tool.setdefault(_origin_for(problem.code, origins), []).append(problem)
+    for origin, tool_problems in sorted(by_tool.items(), key=lambda item: (item[0] is not None, item[0].name if item[0] else "")):
+        infos = [foreign_rule(code, origin) for code in sorted({p.code for p in tool_problems})]
+        name = origin.name if origin else "flake8"
+        driver = om.ToolComponent(name=name, version=origin.version if origin else None)
+        runs.append(_run(driver, infos, tool_problems, artifacts, f"{category}/{name}",
+                         om.Invocation(execution_successful=True)))
+    log = json.loads(to_json(om.SarifLog(version="2.1.0", schema_uri=SCHEMA_URI, runs=runs)))
     # to_json drops values equal to the schema default ("warning"), but GitHub
     # reads levels literally: put them back.
-    driver = log["runs"][0]["tool"]["driver"]
-    for descriptor, info in zip(driver["rules"], infos):
-        descriptor["defaultConfiguration"]["level"] = info.level
-    for result, level in zip(log["runs"][0]["results"], levels):
-        result["level"] = level
+    for run, data in zip(runs, log["runs"]):
+        for descriptor, rule in zip(data["tool"]["driver"]["rules"], run.tool.driver.rules):
+            descriptor["defaultConfiguration"]["level"] = rule.default_configuration.level
+        for result, original in zip(data.get("results", []), run.results):
+            result["level"] = original.level
     return log
 
 

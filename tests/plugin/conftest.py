@@ -159,12 +159,35 @@ def parse_flake8(stdout: str) -> list[tuple[str, int, int, str]]:
 
 
 def validate_sarif(log: dict) -> None:
-    """Validate against the official SARIF 2.1.0 schema, or skip saying why."""
+    """Validate against the official SARIF 2.1.0 schema and GitHub's upload limits, or skip saying why."""
+    check_github_limits(log)
     if not SARIF_SCHEMA.is_file():
         pytest.skip(f"SARIF schema not found at {SARIF_SCHEMA} (the shared/ folder beside the repo)")
     import jsonschema
 
     jsonschema.validate(log, json.loads(SARIF_SCHEMA.read_text(encoding="utf-8")))
+
+
+def check_github_limits(log: dict) -> None:
+    """What GitHub code scanning refuses on upload (docs: "SARIF support for code scanning", limits)."""
+    import gzip
+
+    assert len(gzip.compress(json.dumps(log).encode())) <= 10 * 1024 * 1024, "compressed file over 10 MB"
+    assert len(log["runs"]) <= 20
+    identities = [(run["tool"]["driver"]["name"], run.get("automationDetails", {}).get("id")) for run in log["runs"]]
+    assert len(identities) == len(set(identities)), "two runs with one tool and category are rejected"
+    for run in log["runs"]:
+        rules = run["tool"]["driver"].get("rules", [])
+        assert len(run["results"]) <= 25_000 and len(rules) <= 25_000
+        assert all(len(rule.get("properties", {}).get("tags", [])) <= 20 for rule in rules)
+        for result in run["results"]:
+            assert len(result["locations"]) <= 1_000 and len(result.get("relatedLocations", [])) <= 1_000
+            assert result["partialFingerprints"]["primaryLocationLineHash"]
+            for location in result["locations"] + result.get("relatedLocations", []):
+                artifact = location["physicalLocation"]["artifactLocation"]
+                uri = artifact["uri"]
+                assert (artifact.get("uriBaseId") == "%SRCROOT%" and not uri.startswith("/")
+                        and "://" not in uri) or uri.startswith("file:///"), uri
 
 
 @pytest.fixture(scope="session")

@@ -64,6 +64,43 @@ def test_pre_commit_try_repo_runs_the_hook(tmp_path: Path) -> None:
     assert len(analyses(log)) == 1  # the second run read the workspace cache
 
 
+LAUNCH_XML = """\
+<launch>
+  <node pkg="demo_pkg" exec="talker" name="talker"/>
+  <node pkg="demo_pkg" exec="listner" name="listener"/>
+</launch>
+"""
+
+
+@pytest.mark.slow
+def test_pre_commit_hooks_for_launch_files_and_the_whole_workspace(tmp_path: Path) -> None:
+    """The real analysis: a changed launch XML triggers the hook and gets its ROS201 there."""
+    hook_repo = _hook_repo(tmp_path / "hook-repo")
+    project = tmp_path / "project"
+    shutil.copytree(REPO / "examples", project)
+    launch = project / "src/robot_apps/launch/typo.launch.xml"
+    launch.parent.mkdir(parents=True, exist_ok=True)
+    launch.write_text(LAUNCH_XML.replace("demo_pkg", "robot_apps").replace('"talker"', '"dashboard"', 1))
+    _git("init", "-q", ".", cwd=project)
+    _git("add", "-A", cwd=project)
+    env = {**fake_env(tmp_path / "unused.log"), "PRE_COMMIT_HOME": str(tmp_path / "pre-commit-home")}
+    env.pop("PYTHONPATH")
+
+    def try_repo(hook: str, *extra: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, "-m", "pre_commit", "try-repo", str(hook_repo), hook,
+                               "--verbose", *extra], cwd=project, env=env, capture_output=True, text=True,
+                              timeout=900)
+
+    changed = try_repo("rosgraph", "--files", "src/robot_apps/launch/typo.launch.xml")
+    assert changed.returncode == 1, changed.stdout + changed.stderr
+    assert "src/robot_apps/launch/typo.launch.xml:3:" in changed.stdout and "ROS201" in changed.stdout
+    assert "producers.py" not in changed.stdout
+    whole = try_repo("rosgraph-workspace", "--files", "README.md")
+    assert whole.returncode == 1
+    for needle in ("typo.launch.xml:3:", "producers.py:49:9: ROS001", "consumers.py:20:9: ROS003"):
+        assert needle in whole.stdout, whole.stdout
+
+
 def _ros_package(root: Path) -> Path:
     """An ament_python package, style-clean for ament_flake8, with the standard fake findings."""
     return write_tree(root, {

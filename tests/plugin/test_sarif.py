@@ -58,6 +58,13 @@ def test_log_is_valid_sarif_with_what_github_reads(tmp_path: Path) -> None:
     assert run["automationDetails"]["id"] == "test/"
     assert run["columnKind"] == "unicodeCodePoints"
     assert run["invocations"][0]["toolExecutionNotifications"][0]["message"]["text"] == "budget exhausted"
+    assert run["invocations"][0]["executionSuccessful"] is True
+    for rule in driver["rules"]:
+        assert rule["helpUri"].startswith(driver["informationUri"])
+    ros003 = next(r for r in driver["rules"] if r["id"] == "ROS003")
+    assert ros003["helpUri"].endswith("docs/rules.md#ros003-subscription-without-publisher")
+    failed = _log(root, successful=False)
+    assert failed["runs"][0]["invocations"][0]["executionSuccessful"] is False
 
 
 def test_results_link_related_locations_with_relative_uris(tmp_path: Path) -> None:
@@ -68,7 +75,10 @@ def test_results_link_related_locations_with_relative_uris(tmp_path: Path) -> No
     assert first["relatedLocations"][0]["id"] == 1
     location = first["locations"][0]["physicalLocation"]
     assert location["artifactLocation"] == {"uri": "pkg/a%20b.py", "uriBaseId": "%SRCROOT%"}
-    assert location["region"] == {"startLine": 4, "startColumn": 1}
+    assert location["region"] == {"startLine": 4, "startColumn": 1, "endLine": 4, "endColumn": 45}
+    prints = first["partialFingerprints"]
+    assert set(prints) == {FINGERPRINT_KEY, "primaryLocationLineHash"}
+    assert prints["primaryLocationLineHash"].endswith(":1")
     # a character column, as given (the line holds a non-ASCII character before it)
     assert second["locations"][0]["physicalLocation"]["region"]["startColumn"] == 13
 
@@ -78,15 +88,20 @@ def test_files_outside_the_source_root_get_absolute_uris(tmp_path: Path) -> None
     log = sarif_log([Problem(Place(tmp_path / "other.py", 1, 1), "E501", "line too long")], catalogue(),
                     srcroot=root, category="test", origins={"E": Origin("pycodestyle", "2.11.0")})
     validate_sarif(log)
-    (result,) = log["runs"][0]["results"]
+    ours, theirs = log["runs"]
+    assert ours["results"] == [] and ours["tool"]["driver"]["name"] == "flake8-rosgraph"
+    (result,) = theirs["results"]
     assert result["locations"][0]["physicalLocation"]["artifactLocation"] == {
         "uri": (tmp_path / "other.py").as_uri()}
-    rule = log["runs"][0]["tool"]["driver"]["rules"][result["ruleIndex"]]
+    # another plugin's code is reported under that plugin, never under our driver
+    assert (theirs["tool"]["driver"]["name"], theirs["tool"]["driver"]["version"]) == ("pycodestyle", "2.11.0")
+    assert theirs["automationDetails"]["id"] == "test/pycodestyle/"
+    rule = theirs["tool"]["driver"]["rules"][result["ruleIndex"]]
     assert rule["id"] == "E501" and "pycodestyle" in rule["properties"]["tags"]
 
 
 def _fingerprints(log: dict) -> list[str]:
-    return [r["partialFingerprints"][FINGERPRINT_KEY] for r in log["runs"][0]["results"]]
+    return [r["partialFingerprints"][FINGERPRINT_KEY] for run in log["runs"] for r in run["results"]]
 
 
 def test_fingerprints_do_not_depend_on_machine_or_line_numbers(tmp_path: Path) -> None:

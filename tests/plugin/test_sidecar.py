@@ -32,7 +32,7 @@ def _rows(log: dict) -> list[tuple[str, int, int, str]]:
     return sorted((r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
                    r["locations"][0]["physicalLocation"]["region"]["startLine"],
                    r["locations"][0]["physicalLocation"]["region"]["startColumn"], r["ruleId"])
-                  for r in log["runs"][0]["results"])
+                  for run in log["runs"] for r in run["results"])
 
 
 @pytest.mark.parametrize("extra", [[], ["--extend-ignore", "F401"], ["--format", "pylint"], ["--show-source"]])
@@ -54,17 +54,21 @@ def test_terminal_output_is_unchanged_and_sidecar_matches_it(fake_engine: Path, 
 def test_ros_results_carry_rule_metadata_and_related_locations(fake_engine: Path, mixed: Path, run) -> None:
     run(["--rosgraph-sarif", "results.sarif", "."], mixed)
     log = json.loads((mixed / "results.sarif").read_text())
-    rules = log["runs"][0]["tool"]["driver"]["rules"]
-    (loop,) = [r for r in log["runs"][0]["results"] if r["ruleId"] == "ROS002"]
+    ours, *others = log["runs"]
+    rules = ours["tool"]["driver"]["rules"]
+    (loop,) = [r for r in ours["results"] if r["ruleId"] == "ROS002"]
     assert rules[loop["ruleIndex"]]["id"] == "ROS002"
     assert rules[loop["ruleIndex"]]["help"]["markdown"].startswith("## What it does")
     assert "[publisher '/loop'](1)" in loop["message"]["text"]
     assert loop["relatedLocations"][0]["physicalLocation"]["region"]["startLine"] == 8
-    (e501,) = [r for r in rules if r["id"] == "E501"]
-    (f401,) = [r for r in rules if r["id"] == "F401"]
+    assert not any(r["id"][:3] != "ROS" for r in rules)  # only our rules under our driver
+    by_tool = {run["tool"]["driver"]["name"]: run for run in others}
+    (e501,) = [r for r in by_tool["pycodestyle"]["tool"]["driver"]["rules"] if r["id"] == "E501"]
+    (f401,) = [r for r in by_tool["pyflakes"]["tool"]["driver"]["rules"] if r["id"] == "F401"]
     assert "pycodestyle" in e501["properties"]["tags"]
     assert "pyflakes" in f401["properties"]["tags"]
-    assert log["runs"][0]["automationDetails"]["id"] == "flake8-rosgraph/flake8/"
+    assert ours["automationDetails"]["id"] == "flake8-rosgraph/flake8/"
+    assert by_tool["pyflakes"]["automationDetails"]["id"] == "flake8-rosgraph/flake8/pyflakes/"
 
 
 def test_sidecar_path_from_the_environment(fake_engine: Path, mixed: Path, run,
