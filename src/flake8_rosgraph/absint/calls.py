@@ -233,7 +233,9 @@ class CallSemantics:
         self._escape(args)
         last = qualname.rsplit(".", 1)[-1]
         if last[:1].isupper():
-            return atoms([Obj(self._site(node), Extern(qualname))])
+            obj = Obj(self._site(node), Extern(qualname))
+            self.record_construct(obj, args, node)
+            return atoms([obj])
         return TOP
 
     def call_bound_extern(self, atom: ExternBound, args: "Args", node) -> Value:
