@@ -54,7 +54,8 @@ _SKIP_DIRS = frozenset({"__pycache__", "node_modules"})
 #: Files in a directory that tell ROS tools to skip it.
 _IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
 #: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files).
-_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch"})
+_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch",
+                             ".msg", ".srv", ".action"})
 
 
 @dataclass(frozen=True)
@@ -113,6 +114,13 @@ def cache_key(root: Path, settings: Settings) -> str:
         digest.update(f"\0stub\0{stub.resolve().as_posix()}\0{content}".encode())
     for name in settings.external_topics:
         digest.update(f"\0external\0{name}".encode())
+    for folder in settings.interface_dirs:
+        for path in workspace_inputs(folder) if folder.is_dir() else ():
+            try:
+                content = _sha256_file(path)
+            except OSError:
+                content = "unreadable"
+            digest.update(f"\0interface\0{path.resolve().as_posix()}\0{content}".encode())
     for path in workspace_inputs(root):
         try:
             content = _sha256_file(path)
@@ -275,7 +283,7 @@ def build_report(root: Path, settings: Settings) -> WorkspaceReport:
 
     from .launch.api import judged_graph
 
-    graph = build_graph(root, tuple(settings.stub_files))
+    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,

@@ -43,6 +43,9 @@ def add_parser(subparsers: Any) -> None:
     parser.add_argument("--sarif", type=Path, metavar="FILE", help="also write the findings as SARIF 2.1.0")
     parser.add_argument("--root", type=Path, help="workspace root (default: discovered; env ROSGRAPH_ROOT)")
     parser.add_argument("--stubs", metavar="FILES", help="comma-separated extra library model files")
+    parser.add_argument("--interfaces", metavar="DIRS",
+                        help="comma-separated folders of interface packages outside the workspace "
+                             "(env ROSGRAPH_INTERFACES)")
     parser.add_argument("--external-topics", metavar="NAMES",
                         help="comma-separated names used outside the workspace")
     parser.add_argument("--cache-dir", type=Path, help="cache location (default: <root>/.rosgraph-cache)")
@@ -110,7 +113,8 @@ class _Selection:
 
 def _settings(args: argparse.Namespace) -> Settings:
     given = {"root": args.root, "stubs": args.stubs, "external_topics": args.external_topics,
-             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug}
+             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug,
+             "interfaces": args.interfaces}
     return Settings.resolve({k: (str(v) if isinstance(v, Path) else v) for k, v in given.items()}, os.environ)
 
 

@@ -1,0 +1,115 @@
+"""ROS107 message-field."""
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..graph.messages import FieldStore
+from ..graph.model import RosGraph
+from ..interfaces.catalogue import Catalogue, display_name, message_key
+from ..interfaces.definitions import Field, MessageDef
+from ..interfaces.field_values import rejection
+from .base import Finding, Rule, RuleConfig
+
+
+def resolve(catalogue: Catalogue, root: MessageDef, path: tuple[str, ...]
+            ) -> tuple[MessageDef, Field | None, str] | None:
+    """Walk ``path`` down nested message fields: the definition holding the last step, its
+    field (``None`` when that definition has no such field) and the step's name. ``None``
+    when the walk leaves what the catalogue knows (an unknown nested type, an array)."""
+    current = root
+    for depth, name in enumerate(path):
+        found = current.field(name)
+        if found is None or depth == len(path) - 1:
+            return current, found, name
+        if found.type.array is not None or not found.type.is_message:
+            return None
+        nested = catalogue.get(found.type.base)
+        if nested is None:
+            return None
+        current = nested
+    return None
+
+
+class MessageField(Rule):
+    """## What it does
+    Checks what code stores in ROS message fields, by attribute or constructor
+    keyword: the field must exist, and the value must be one rclpy accepts for
+    the field's type.
+
+    ## Why is this bad?
+    Generated message classes check every assignment: `String(data=5)`,
+    `twist.linear.x = 1` (an `int` in a `float64` field), `status.level = 300`
+    (out of a `uint8`'s range), `msg.ranges = 0.0` (a scalar for an array) and
+    `header.stamp = self.get_clock().now()` (an `rclpy.time.Time`, not a
+    `builtin_interfaces/Time`) all raise `AssertionError`; a misspelt field
+    raises `AttributeError`. Releases that skip these checks for speed pass the
+    value to C at `publish`, which then fails or silently truncates. Message
+    classes take keyword arguments only: `String('hi')` is a `TypeError`.
+
+    ## Known problems
+    Field definitions come from the standard interface packages shipped with
+    the tool, the workspace's own `.msg`/`.srv`/`.action` files and the folders
+    given with `--rosgraph-interfaces`; a message of any other package is not
+    checked. Only values the analysis knows are judged (constants, message
+    instances, lists of known elements); `msg.x = float(v)` or a value from a
+    parameter of unknown type is accepted. A keyword the class does not have
+    is ignored silently when field checks are off, and is still reported.
+
+    ## Example
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1
+    header = Header(stamp=self.get_clock().now())
+    ```
+
+    ## Use instead
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1.0
+    header = Header(stamp=self.get_clock().now().to_msg())
+    ```
+
+    ## Options
+    None.
+    """
+
+    code = "ROS107"
+    name = "message-field"
+    level = "error"
+    precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "a message field the type does not have, or a value the field's type rejects"
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        facts, catalogue = graph.messages, graph.interfaces
+        if facts is None or catalogue is None:
+            return
+        for built in facts.constructions:
+            key = message_key(built.message)
+            if built.positional and catalogue.get(key) is not None:
+                yield Finding(built.location, self.code,
+                              f"{display_name(key)} takes keyword arguments only, not "
+                              f"{built.positional} positional")
+        for store in facts.stores:
+            finding = self._store_problem(catalogue, store)
+            if finding is not None:
+                yield finding
+
+    def _store_problem(self, catalogue: Catalogue, store: FieldStore) -> Finding | None:
+        root = catalogue.get(message_key(store.message))
+        if root is None or any(step.startswith("_") for step in store.path):
+            return None
+        resolved = resolve(catalogue, root, store.path)
+        if resolved is None:
+            return None
+        owner, found, name = resolved
+        where = display_name(owner.key)
+        if found is None:
+            what = "a constant, not a field" if name in owner.constants else "no such field"
+            how = "keyword" if store.keyword else "field"
+            return Finding(store.location, self.code, f"{where} has no {how} '{name}' ({what})")
+        for shape in store.value or ():
+            why = rejection(found.type, shape)
+            if why is not None:
+                return Finding(store.location, self.code,
+                               f"{where} field '{name}' ({found.type.spelled()}) rejects {why}")
+        return None
