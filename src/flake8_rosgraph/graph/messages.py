@@ -26,8 +26,9 @@ class ValueShape:
 
     ``kind``: ``bool``, ``int``, ``float``, ``str``, ``bytes``, ``none`` (with ``value`` the
     constant), ``instance`` (of library class ``cls``; ``modelled`` when a stub models that
-    class, so it is known not to be a message), ``sequence`` (a list or tuple: ``length`` when
-    known, ``items`` the shapes of its elements, ``None`` if unknown) or ``other``.
+    class, so it is known not to be a message), ``sequence`` (``value`` is ``"list"`` or
+    ``"tuple"``; ``length`` when known, ``items`` the shapes of elements it holds, ``None`` if
+    unknown) or ``other``.
     """
 
     kind: str
@@ -101,15 +102,18 @@ def _shape(atom: Any, analysis: Analysis, depth: int) -> ValueShape:
         qualname = atom.cls.qualname
         return ValueShape("instance", cls=qualname, modelled=qualname in analysis.library.classes)
     if isinstance(atom, Seq) and atom.kind in ("list", "tuple"):
+        # A list's length is not known after ``append``/``extend`` (the analysis keeps the
+        # literal's items); a tuple's is.
+        length = len(atom.items) if atom.kind == "tuple" else None
         items: set[ValueShape] = set()
         for item in atom.items:
             found = shapes(item, analysis, depth + 1)
             if found is None:
-                return ValueShape("sequence", length=len(atom.items))
+                return ValueShape("sequence", atom.kind, length=length)
             items.update(found)
-        return ValueShape("sequence", length=len(atom.items), items=tuple(sorted(items, key=repr)))
+        return ValueShape("sequence", atom.kind, length=length, items=tuple(sorted(items, key=repr)))
     if isinstance(atom, Coll) and atom.kind in ("list", "tuple"):
-        return ValueShape("sequence", items=shapes(atom.elem, analysis, depth + 1))
+        return ValueShape("sequence", atom.kind, items=shapes(atom.elem, analysis, depth + 1))
     return ValueShape("other")
 
 

@@ -42,8 +42,17 @@ def describe(shape: Any) -> str:
         key = message_key(shape.cls)
         return f"a {display_name(key)} message" if key else f"a {shape.cls}"
     if shape.kind == "sequence":
-        return f"a sequence of {shape.length}" if shape.length is not None else "a sequence"
+        noun = shape.value or "sequence"
+        return f"a {noun} of {shape.length}" if shape.length is not None else f"a {noun}"
     return "this value"
+
+
+def without_none_alternative(shapes: list[Any]) -> list[Any]:
+    """The possibilities worth judging: ``None`` beside other values is nearly always the
+    failure return of a helper (``path = get_path() or None``) that the caller checks on a path
+    the analysis does not separate; ``None`` alone is judged."""
+    rest = [s for s in shapes if s.kind != "none"]
+    return rest if rest else list(shapes)
 
 
 def rejection(ftype: FieldType, shape: Any) -> str | None:

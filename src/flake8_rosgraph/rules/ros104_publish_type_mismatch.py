@@ -3,18 +3,21 @@ from __future__ import annotations
 
 from typing import Iterator
 
-from ..graph.model import RosGraph
+from ..graph.messages import Publication
+from ..graph.model import Location, RosGraph
 from ..interfaces.catalogue import display_name, message_key
-from ..interfaces.field_values import describe
+from ..interfaces.field_values import describe, without_none_alternative
 from .base import Finding, Rule, RuleConfig
 
 _WRONG_KINDS = frozenset({"bool", "int", "float", "str", "bytes", "none", "sequence"})
 
 
 def wrong_values(shapes, expected: set[str]) -> list[str]:
-    """Descriptions of the possible values that are not a message of one of the ``expected`` keys."""
+    """Descriptions of the possible values that are not a message of one of the ``expected`` keys
+    (``None`` beside other possibilities is an error path the caller handles, not judged)."""
     out = []
-    for shape in shapes:
+    shapes = list(shapes)
+    for shape in without_none_alternative(shapes):
         if shape.kind == "instance":
             key = message_key(shape.cls)
             if (key is not None and key not in expected) or (key is None and shape.modelled):
@@ -75,16 +78,24 @@ class PublishTypeMismatch(Rule):
         facts = graph.messages
         if facts is None:
             return
+        # One call site may publish on several publishers (``self.pub`` set on two branches,
+        # each with its own message type): judged together, what may be published there
+        # against every type those publishers take.
+        by_site: dict[Location, list[Publication]] = {}
         for pub in facts.publications:
-            if pub.message is None or pub.publisher_types is None:
-                continue
-            expected = {message_key(cls) for cls in pub.publisher_types}
+            by_site.setdefault(pub.location, []).append(pub)
+        for location, pubs in sorted(by_site.items()):
+            if any(p.publisher_types is None or p.message is None for p in pubs):
+                continue  # unknown in one calling context: unknown (see ROS107's merge_contexts)
+            expected = {message_key(cls) for p in pubs for cls in p.publisher_types}
             if None in expected:
                 continue
-            for wrong in wrong_values(pub.message, expected):
+            shapes = sorted({s for p in pubs for s in p.message}, key=repr)
+            wrong = wrong_values(shapes, expected)
+            if wrong:
                 types = " or ".join(sorted(display_name(k) for k in expected))
-                yield Finding(pub.location, self.code,
-                              f"publishes {wrong} on a publisher of {types}")
+                yield Finding(location, self.code,
+                              f"publishes {' or '.join(sorted(set(wrong)))} on a publisher of {types}")
         for ret in facts.service_returns:
             response = message_key(ret.service + ".Response")
             if ret.value is None or response is None:

@@ -1,13 +1,14 @@
 """ROS107 message-field."""
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Iterator
 
 from ..graph.messages import FieldStore
 from ..graph.model import RosGraph
 from ..interfaces.catalogue import Catalogue, display_name, message_key
 from ..interfaces.definitions import Field, MessageDef
-from ..interfaces.field_values import rejection
+from ..interfaces.field_values import rejection, without_none_alternative
 from .base import Finding, Rule, RuleConfig
 
 
@@ -28,6 +29,24 @@ def resolve(catalogue: Catalogue, root: MessageDef, path: tuple[str, ...]
             return None
         current = nested
     return None
+
+
+def merge_contexts(stores: list[FieldStore]) -> list[FieldStore]:
+    """One store per place, field and way, its value joined over every context the code ran in.
+
+    Code in a function is analysed once per calling context, including contexts met on the
+    way to the fixpoint (a caller's value before it grew to its final one): a value is judged
+    only as the join of them all, and unknown if any of them is."""
+    merged: dict[tuple, FieldStore] = {}
+    for store in stores:
+        key = (store.location, store.message, store.path, store.keyword)
+        known = merged.get(key)
+        if known is None:
+            merged[key] = store
+        elif known.value is not None:
+            value = None if store.value is None else tuple(sorted(set(known.value + store.value), key=repr))
+            merged[key] = replace(known, value=value)
+    return [merged[key] for key in sorted(merged, key=repr)]
 
 
 class MessageField(Rule):
@@ -89,7 +108,7 @@ class MessageField(Rule):
                 yield Finding(built.location, self.code,
                               f"{display_name(key)} takes keyword arguments only, not "
                               f"{built.positional} positional")
-        for store in facts.stores:
+        for store in merge_contexts(facts.stores):
             finding = self._store_problem(catalogue, store)
             if finding is not None:
                 yield finding
@@ -107,7 +126,7 @@ class MessageField(Rule):
             what = "a constant, not a field" if name in owner.constants else "no such field"
             how = "keyword" if store.keyword else "field"
             return Finding(store.location, self.code, f"{where} has no {how} '{name}' ({what})")
-        for shape in store.value or ():
+        for shape in without_none_alternative(list(store.value or ())):
             why = rejection(found.type, shape)
             if why is not None:
                 return Finding(store.location, self.code,
