@@ -123,12 +123,27 @@ class MessageField(Rule):
         owner, found, name = resolved
         where = display_name(owner.key)
         if found is None:
-            what = "a constant, not a field" if name in owner.constants else "no such field"
-            how = "keyword" if store.keyword else "field"
-            return Finding(store.location, self.code, f"{where} has no {how} '{name}' ({what})")
+            what = " (it is a constant)" if name in owner.constants else \
+                " (constructor keyword)" if store.keyword else ""
+            return Finding(store.location, self.code, f"{where} has no field '{name}'{what}")
         for shape in without_none_alternative(list(store.value or ())):
             why = rejection(found.type, shape)
             if why is not None:
                 return Finding(store.location, self.code,
-                               f"{where} field '{name}' ({found.type.spelled()}) rejects {why}")
+                               f"{where} field '{name}' ({found.type.spelled()}) rejects {why}"
+                               f"{_hint(found.type.base, shape)}")
         return None
+
+
+#: rclpy's time classes and the message each one's ``to_msg()`` makes.
+_TO_MSG = {"rclpy.time.Time": "builtin_interfaces/msg/Time",
+           "rclpy.duration.Duration": "builtin_interfaces/msg/Duration"}
+
+
+def _hint(base: str, shape) -> str:
+    """How to write the value the field takes, for the two mistakes everyone makes."""
+    if base in ("float32", "float64") and shape.kind == "int":
+        return f": write {float(shape.value)!r}"
+    if shape.kind == "instance" and _TO_MSG.get(shape.cls) == base:
+        return ": call .to_msg() on it"
+    return ""
