@@ -6,7 +6,8 @@ once per calling context; without deciding the test, every branch would see ever
 The test is decided only when every possibility of ``x`` answers the same for every class
 of ``T``:
 
-* a constant or a tuple/list/dict shape has an exact Python type;
+* a constant or a tuple/list/dict shape has an exact Python type, whose MRO holds only
+  builtins (abstract base classes such as ``collections.abc.Sequence`` stay undecided);
 * an instance of a library class ``C`` (made by calling ``C``) is an instance of ``C``, and is
   taken not to be a ``bool``/``int``/``float``/``complex``/``str``/``bytes``/``NoneType`` or a
   builtin container: library classes deriving from those are not constructed that way in
@@ -24,6 +25,8 @@ _BUILTIN_TYPES: dict[str, type] = {
     name: getattr(builtins, name) for name in (
         "bool", "int", "float", "complex", "str", "bytes", "list", "tuple", "dict", "set",
         "frozenset", "object")}
+#: Where abstract base classes live: a builtin value may be registered as their instance.
+_ABSTRACT = ("collections.abc.", "numbers.", "typing.", "abc.", "os.PathLike")
 _CONTAINER_TYPES = {"list": list, "tuple": tuple, "dict": dict, "set": set, "frozenset": frozenset}
 
 
@@ -86,6 +89,8 @@ def _is_instance(atom: Atom, target: str) -> bool | None:
     if exact is not None:
         if builtin in _BUILTIN_TYPES:
             return issubclass(exact, _BUILTIN_TYPES[builtin])
+        if builtin is None and not target.startswith(_ABSTRACT):
+            return False  # a builtin type's MRO holds builtins only
         return None
     if isinstance(atom, Obj) and isinstance(atom.cls, Extern):
         if atom.cls.qualname == target:
