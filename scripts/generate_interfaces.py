@@ -81,7 +81,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("checkouts", type=Path)
     parser.add_argument("-o", "--output", type=Path, default=DEFAULT_OUTPUT)
     args = parser.parse_args(argv)
-    document = generate(args.checkouts)
+    document = generate(args.checkouts, PACKAGES)
     text = json.dumps(document, indent=0, sort_keys=False, separators=(",", ":")) + "\n"
     args.output.write_text(text, encoding="utf-8")
     print(f"{len(document['messages'])} message definitions → {args.output}")
