@@ -80,6 +80,19 @@ def test_attribute_stores_follow_chains_the_analysis_did_not_model(analyse):
     assert ["camera"] in frames
 
 
+def test_attribute_reads_are_recorded_from_the_nearest_instance(analyse):
+    result = analyse({"m.py": """
+        from sensor_msgs.msg import Image
+        img = Image()
+        SEC = img.header.stamp.sec
+        img.data.append(1)
+        WIDTH = img.width
+    """})
+    reads = sorted((e.line, _arg(e, "path").strings()[0]) for e in result.effects("get_attribute"))
+    assert reads == [(4, "header"), (4, "header.stamp"), (4, "header.stamp.sec"),
+                     (5, "data"), (5, "data.append"), (6, "width")]
+
+
 def test_chains_through_calls_are_not_evaluated_twice(analyse):
     result = analyse({"m.py": """
         from std_msgs.msg import Header

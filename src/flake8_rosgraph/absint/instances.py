@@ -12,6 +12,7 @@ it, recorded like stub effects at the site in the workspace:
   Arguments: ``object`` (the instances the chain starts from), ``path`` (the attribute
   chain below them, ``"a.b"``) and ``value``. The chain lets ``msg.header.stamp = t`` be
   checked although nothing modelled what ``msg.header`` holds.
+* ``get_attribute``: a read ``x.a.b``, the same way (``object``, ``path``).
 
 Nothing here gives these facts a meaning; they are data for whoever reads effects.
 """
@@ -25,12 +26,13 @@ from .values import Extern, Obj, Value, atoms, const
 
 CONSTRUCT = "construct"
 SET_ATTRIBUTE = "set_attribute"
+GET_ATTRIBUTE = "get_attribute"
 #: Longest attribute chain followed above a store (``a.b.c.d.e = v``).
 MAX_CHAIN = 6
 
 
 class InstanceFacts:
-    """Recording of the two effects, mixed into :class:`~.interpreter.Interpreter`."""
+    """Recording of these effects, mixed into :class:`~.interpreter.Interpreter`."""
 
     def record_construct(self, obj: Obj, args: Args, node: ast.AST | None) -> None:
         if node is None:
@@ -41,20 +43,36 @@ class InstanceFacts:
         self._record(CONSTRUCT, tuple(values), node)
 
     def record_attribute_store(self, target: ast.Attribute, holder: Value, value: Value) -> None:
-        path = [target.attr]
-        expr: ast.expr = target.value
+        found, path = self._chain_root(target, holder)
+        if found:
+            self._record(SET_ATTRIBUTE, (("object", atoms(found)), ("path", const(path)),
+                                         ("value", value)), target)
+
+    def record_attribute_load(self, node: ast.Attribute, holder: Value) -> None:
+        found, path = self._chain_root(node, holder)
+        if found:
+            self._record(GET_ATTRIBUTE, (("object", atoms(found)), ("path", const(path))), node)
+
+    def _chain_root(self, node: ast.Attribute, holder: Value) -> tuple[list[Obj], str]:
+        """The unmodelled instances ``node``'s attribute chain starts from (nearest first),
+        and the chain below them (``"header.stamp"``)."""
+        path = [node.attr]
+        expr: ast.expr = node.value
         current = holder
         for _ in range(MAX_CHAIN):
             found = self._unmodelled_instances(current)
             if found:
-                self._record(SET_ATTRIBUTE, (("object", atoms(found)), ("path", const(".".join(path))),
-                                             ("value", value)), target)
-                return
+                return found, ".".join(path)
+            # Go up only through what the analysis did not follow (an attribute it does not
+            # know, or one only other objects received): a known holder ends the chain.
+            if not current.is_top and not current.is_bottom:
+                break
             if not isinstance(expr, ast.Attribute) or not _plain_chain(expr.value):
-                return
+                break
             path.insert(0, expr.attr)
             expr = expr.value
             current = self.eval(expr)
+        return [], ""
 
     def _unmodelled_instances(self, value: Value) -> list[Obj]:
         if value.is_top:

@@ -1,6 +1,6 @@
 """Message facts: what the code builds, fills in and publishes, as plain data for ROS104/ROS107.
 
-Read from the analyser's generic effects (``construct`` and ``set_attribute`` on instances of
+Read from the analyser's generic effects (``construct``, ``set_attribute`` and ``get_attribute`` on instances of
 unmodelled library classes, the stubs' ``publish``) and from the return values of service
 callbacks. Abstract values become :class:`ValueShape` tuples — the few things a message
 field's type check looks at — so the rules never see the analyser's lattice. ``None`` stands
@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..absint.engine import Analysis, Effect
-from ..absint.instances import CONSTRUCT, SET_ATTRIBUTE
+from ..absint.instances import CONSTRUCT, GET_ATTRIBUTE, SET_ATTRIBUTE
 from ..absint.values import BoundMethod, Coll, Const, Extern, FuncAtom, Obj, Seq, Value
 from .model import Location
 
@@ -52,6 +52,15 @@ class FieldStore:
 
 
 @dataclass(frozen=True)
+class FieldRead:
+    """``path`` of an instance of ``message`` read."""
+
+    location: Location
+    message: str
+    path: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class Construction:
     """A call of library class ``message`` with ``positional`` positional arguments."""
 
@@ -83,6 +92,7 @@ class ServiceReturn:
 @dataclass
 class MessageFacts:
     stores: list[FieldStore]
+    reads: list[FieldRead]
     constructions: list[Construction]
     publications: list[Publication]
     service_returns: list[ServiceReturn]
@@ -127,7 +137,7 @@ def _class_names(value: Value) -> tuple[str, ...] | None:
 
 
 def message_facts(analysis: Analysis) -> MessageFacts:
-    facts = MessageFacts([], [], [], [])
+    facts = MessageFacts([], [], [], [], [])
     for eff in analysis.all_effects():
         if eff.kind == CONSTRUCT:
             message = (eff.arg("class").strings() or [""])[0]
@@ -143,12 +153,18 @@ def message_facts(analysis: Analysis) -> MessageFacts:
                 if isinstance(obj, Obj) and isinstance(obj.cls, Extern):
                     facts.stores.append(FieldStore(_location(eff), obj.cls.qualname, path,
                                                    shapes(eff.arg("value"), analysis), False))
+        elif eff.kind == GET_ATTRIBUTE:
+            path = tuple((eff.arg("path").strings() or [""])[0].split("."))
+            facts.reads.extend(FieldRead(_location(eff), obj.cls.qualname, path)
+                               for obj in eff.arg("object")
+                               if isinstance(obj, Obj) and isinstance(obj.cls, Extern))
         elif eff.kind == "publish":
             facts.publications.append(Publication(_location(eff), shapes(eff.arg("msg"), analysis),
                                                   _class_names(eff.arg("type"))))
         elif eff.kind == "service":
             facts.service_returns.extend(_service_returns(analysis, eff))
-    for bucket in (facts.stores, facts.constructions, facts.publications, facts.service_returns):
+    for bucket in (facts.stores, facts.reads, facts.constructions, facts.publications,
+                   facts.service_returns):
         bucket[:] = sorted(set(bucket), key=repr)
     return facts
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Iterator
 
-from ..graph.messages import FieldStore
+from ..graph.messages import FieldRead, FieldStore
 from ..graph.model import RosGraph
 from ..interfaces.catalogue import Catalogue, display_name, message_key
 from ..interfaces.definitions import Field, MessageDef
@@ -31,6 +31,17 @@ def resolve(catalogue: Catalogue, root: MessageDef, path: tuple[str, ...]
     return None
 
 
+#: What a generated message class has besides its fields and constants (rosidl_generator_py).
+_CLASS_ATTRIBUTES = frozenset({"get_fields_and_field_types", "SLOT_TYPES"})
+
+
+def _class_attribute(owner: MessageDef, name: str) -> bool:
+    """A name a message instance has that is not a field: constants, ``<FIELD>__DEFAULT``,
+    the class's own API and private or special names."""
+    return (name in owner.constants or name in _CLASS_ATTRIBUTES or name.startswith("_")
+            or (name.endswith("__DEFAULT") and owner.field(name[:-len("__DEFAULT")].lower()) is not None))
+
+
 def merge_contexts(stores: list[FieldStore]) -> list[FieldStore]:
     """One store per place, field and way, its value joined over every context the code ran in.
 
@@ -53,7 +64,7 @@ class MessageField(Rule):
     """## What it does
     Checks what code stores in ROS message fields, by attribute or constructor
     keyword: the field must exist, and the value must be one rclpy accepts for
-    the field's type.
+    the field's type. Fields read (`msg.dat`) must exist too.
 
     ## Why is this bad?
     Generated message classes check every assignment: `String(data=5)`,
@@ -112,6 +123,18 @@ class MessageField(Rule):
             finding = self._store_problem(catalogue, store)
             if finding is not None:
                 yield finding
+        for read in facts.reads:
+            finding = self._read_problem(catalogue, read)
+            if finding is not None:
+                yield finding
+
+    def _read_problem(self, catalogue: Catalogue, read: FieldRead) -> Finding | None:
+        root = catalogue.get(message_key(read.message))
+        resolved = resolve(catalogue, root, read.path) if root is not None else None
+        if resolved is None or resolved[1] is not None or _class_attribute(resolved[0], resolved[2]):
+            return None
+        owner, _, name = resolved
+        return Finding(read.location, self.code, f"{display_name(owner.key)} has no field '{name}'")
 
     def _store_problem(self, catalogue: Catalogue, store: FieldStore) -> Finding | None:
         root = catalogue.get(message_key(store.message))

@@ -74,7 +74,13 @@ class Driver(Node):
         speeds.header.frame_id = 7  # ROS107
         speeds.last_command = WheelCommand(targets=(1.0, 2.0, 3.0))  # ROS107
         speeds.last_command = WheelCommand(targets=(1.0, 2.0))
-        return speeds
+        self.get_logger().info(f'left {speeds.left} in mode {speeds.mode}')
+        self.get_logger().info(f'stamp {speeds.header.stamp.sec} {speeds.header.stamp.nanosec}')
+        self.get_logger().info(f'right {speeds.rigth}')  # ROS107
+        self.get_logger().info(f'{speeds.header.stamp.secs}')  # ROS107
+        fields = speeds.get_fields_and_field_types()
+        idle = speeds.MODE_IDLE
+        return speeds, fields, idle
 
 
 def main(args=None):
