@@ -75,10 +75,12 @@ class InstanceFacts:
         return [], ""
 
     def _unmodelled_instances(self, value: Value) -> list[Obj]:
-        if value.is_top:
+        if value.atoms is None:
             return []
-        return sorted((a for a in value if isinstance(a, Obj) and isinstance(a.cls, Extern)
-                       and a.cls.qualname not in self.lib.classes), key=repr)
+        classes = self.lib.classes
+        found = [a for a in value.atoms if type(a) is Obj and type(a.cls) is Extern
+                 and a.cls.qualname not in classes]
+        return sorted(found, key=repr) if len(found) > 1 else found
 
     def _record(self, kind: str, values: tuple, node: ast.AST) -> None:
         frame = self.frame

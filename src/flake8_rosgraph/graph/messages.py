@@ -138,7 +138,8 @@ def _class_names(value: Value) -> tuple[str, ...] | None:
 
 def message_facts(analysis: Analysis) -> MessageFacts:
     facts = MessageFacts([], [], [], [], [])
-    for eff in analysis.all_effects():
+    # Every task's latest effects; the facts are deduplicated and sorted below.
+    for eff in {eff for effects in analysis.effects.values() for eff in effects.values()}:
         if eff.kind == CONSTRUCT:
             message = (eff.arg("class").strings() or [""])[0]
             facts.constructions.append(Construction(_location(eff), message,
