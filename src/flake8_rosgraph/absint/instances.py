@@ -90,7 +90,10 @@ class InstanceFacts:
 
 
 def _plain_chain(expr: ast.expr) -> bool:
-    """Names and attribute loads only: evaluating them again has no effect of its own."""
-    while isinstance(expr, ast.Attribute):
+    """Names and attribute loads only (evaluating them again has no effect of its own), and
+    short: a chain is walked once per attribute of it."""
+    for _ in range(MAX_CHAIN):
+        if not isinstance(expr, ast.Attribute):
+            return isinstance(expr, ast.Name)
         expr = expr.value
-    return isinstance(expr, ast.Name)
+    return False
