@@ -43,6 +43,7 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "parameter": frozenset({"node", "name", "default"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node", "name", "names"}),
+    "publish": frozenset({"publisher", "msg", "type"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
     "launch_node": frozenset({"package", "executable"}),
     "launch_description": frozenset({"description"}),
@@ -55,6 +56,7 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "parameter": frozenset({"node", "name"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node"}),
+    "publish": frozenset({"publisher", "msg"}),
     "launch_node": frozenset(),
     "launch_description": frozenset(),
 }

@@ -57,8 +57,27 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
         return []
 
 
-def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
-    """The ROS computation graph of the Python code under ``root``; never raises."""
+def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
+                analysis: Analysis, diagnostics: list[Diagnostic]) -> None:
+    """Message facts and interface definitions for the message rules; a failure here must not
+    cost the graph."""
+    from .graph.messages import message_facts
+    from .interfaces.catalogue import load_catalogue
+    try:
+        graph.messages = message_facts(analysis)
+        graph.interfaces = load_catalogue(root if root.is_dir() else None, interface_dirs)
+        diagnostics.extend(Diagnostic(path, 1, why) for path, why in graph.interfaces.problems)
+    except Exception as exc:
+        graph.messages = graph.interfaces = None
+        diagnostics.append(Diagnostic("", 0, f"message facts not gathered: internal error: "
+                                              f"{type(exc).__name__}: {exc}", "error"))
+
+
+def build_graph(root: Path, stub_files: Sequence[Path] = (),
+                interface_dirs: Sequence[Path] = ()) -> RosGraph:
+    """The ROS computation graph of the Python code under ``root``; never raises.
+
+    ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``)."""
     root = Path(root)
     diagnostics: list[Diagnostic] = []
     try:
@@ -74,6 +93,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
+        _interfaces(root, interface_dirs, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "

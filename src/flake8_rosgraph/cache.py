@@ -66,7 +66,8 @@ OWNER_MARKER = "CACHEDIR.TAG"
 _OWNER_TEXT = "Signature: 8a477f597d28d172789f06886806bc55\n# flake8-rosgraph analysis cache\n"
 _MARKERS = {".gitignore": "# created by flake8-rosgraph\n*\n", "COLCON_IGNORE": "", OWNER_MARKER: _OWNER_TEXT}
 #: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files).
-_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch"})
+_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch",
+                             ".msg", ".srv", ".action"})
 #: Files read (or whose presence matters) whatever their suffix.
 _INPUT_NAMES = frozenset({"CMakeLists.txt", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 
@@ -147,6 +148,9 @@ def cache_key(root: Path, settings: Settings) -> str:
         digest.update(_encoded(f"\0stub\0{stub.resolve().as_posix()}\0{_input_digest(stub, None)}"))
     for name in settings.external_topics:
         digest.update(_encoded(f"\0external\0{name}"))
+    for folder in settings.interface_dirs:
+        for path in workspace_inputs(folder) if folder.is_dir() else ():
+            digest.update(_encoded(f"\0interface\0{path.resolve().as_posix()}\0{_input_digest(path, None)}"))
     base = root if root.is_dir() else root.parent
     for path in workspace_inputs(root):
         digest.update(_encoded(f"\0file\0{path.relative_to(base).as_posix()}\0{_input_digest(path, root)}"))
@@ -432,7 +436,7 @@ def build_report(root: Path, settings: Settings) -> WorkspaceReport:
 
     from .launch.api import judged_graph
 
-    graph = build_graph(root, tuple(settings.stub_files))
+    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,

@@ -56,6 +56,9 @@ def add_parser(subparsers: Any) -> None:
     parser.add_argument("--sarif", type=Path, metavar="FILE", help="also write the findings as SARIF 2.1.0")
     parser.add_argument("--root", type=Path, help="workspace root (default: discovered; env ROSGRAPH_ROOT)")
     parser.add_argument("--stubs", metavar="FILES", help="comma-separated extra library model files")
+    parser.add_argument("--interfaces", metavar="DIRS",
+                        help="comma-separated folders of interface packages outside the workspace "
+                             "(env ROSGRAPH_INTERFACES)")
     parser.add_argument("--external-topics", metavar="NAMES",
                         help="comma-separated names used outside the workspace")
     parser.add_argument("--cache-dir", type=Path, help="cache location (default: <root>/.rosgraph-cache)")
@@ -165,7 +168,8 @@ def _check_root(settings: Settings, args: argparse.Namespace) -> None:
 def _settings(args: argparse.Namespace, config: FileConfig) -> Settings:
     """Command line first, then the configuration files, then the environment."""
     given = {"root": args.root, "stubs": args.stubs, "external_topics": args.external_topics,
-             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug or None}
+             "sarif": args.sarif, "cache_dir": args.cache_dir, "debug": args.debug or None,
+             "interfaces": args.interfaces}
     merged = {key: (str(value) if isinstance(value, Path) else value) if value is not None
               else config.values.get(key) for key, value in given.items()}
     return Settings.resolve(merged, os.environ)

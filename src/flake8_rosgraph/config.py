@@ -31,7 +31,7 @@ else:  # pragma: no cover - Python 3.10
 
 #: Settings that hold a path or a list of paths (made absolute against the file's folder).
 PATH_SETTINGS = frozenset({"root", "sarif", "cache_dir", "baseline"})
-PATHS_SETTINGS = frozenset({"stubs"})
+PATHS_SETTINGS = frozenset({"stubs", "interfaces"})
 #: Settings that hold a list of names or codes.
 LIST_SETTINGS = frozenset({"external_topics", "select", "extend_select", "ignore", "extend_ignore"})
 BOOL_SETTINGS = frozenset({"debug"})
@@ -39,6 +39,7 @@ BOOL_SETTINGS = frozenset({"debug"})
 FLAKE8_KEYS: dict[str, str] = {
     "rosgraph-root": "root", "rosgraph-stubs": "stubs", "rosgraph-external-topics": "external_topics",
     "rosgraph-sarif": "sarif", "rosgraph-cache-dir": "cache_dir", "rosgraph-debug": "debug",
+    "rosgraph-interfaces": "interfaces",
     "select": "select", "extend-select": "extend_select", "ignore": "ignore",
     "extend-ignore": "extend_ignore", "per-file-ignores": "per_file_ignores",
 }
@@ -47,7 +48,7 @@ PYPROJECT_KEYS: dict[str, str] = {
     "root": "root", "stubs": "stubs", "external-topics": "external_topics", "sarif": "sarif",
     "cache-dir": "cache_dir", "debug": "debug", "select": "select", "extend-select": "extend_select",
     "ignore": "ignore", "extend-ignore": "extend_ignore", "per-file-ignores": "per_file_ignores",
-    "baseline": "baseline",
+    "baseline": "baseline", "interfaces": "interfaces",
 }
 _TRUE = {"1", "true", "yes", "on"}
 _FALSE = {"0", "false", "no", "off", ""}

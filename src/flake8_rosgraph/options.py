@@ -14,6 +14,8 @@ flake8 option            environment variable         meaning
 ``--rosgraph-external-   ``ROSGRAPH_EXTERNAL_TOPICS`` names handled outside the workspace,
 topics``                                              on top of the built-in exempt list
 ``--rosgraph-sarif``     ``ROSGRAPH_SARIF``           also write a SARIF file of the run
+``--rosgraph-            ``ROSGRAPH_INTERFACES``      folders of interface packages outside
+interfaces``                                          the workspace, for ROS104/ROS107
 ``--rosgraph-cache-dir`` ``ROSGRAPH_CACHE_DIR``       cache location (default:
                                                       ``<root>/.rosgraph-cache``)
 ``--rosgraph-debug``     ``ROSGRAPH_DEBUG``           re-raise internal errors
@@ -49,6 +51,7 @@ ENV_VARS: dict[str, str] = {
     "sarif": "ROSGRAPH_SARIF",
     "cache_dir": "ROSGRAPH_CACHE_DIR",
     "debug": "ROSGRAPH_DEBUG",
+    "interfaces": "ROSGRAPH_INTERFACES",
 }
 TRUE_WORDS = frozenset({"1", "true", "yes", "on"})
 
@@ -63,6 +66,7 @@ class Settings:
     sarif: Path | None = None
     cache_dir: Path | None = None
     debug: bool = False
+    interface_dirs: tuple[Path, ...] = ()
 
     @classmethod
     def resolve(cls, given: Mapping[str, Any], environ: Mapping[str, str]) -> Settings:
@@ -81,6 +85,7 @@ class Settings:
             sarif=_path(pick("sarif")),
             cache_dir=_path(pick("cache_dir")),
             debug=bool(given.get("debug")) or environ.get(ENV_VARS["debug"], "").strip().lower() in TRUE_WORDS,
+            interface_dirs=tuple(Path(p) for p in _names(pick("interfaces"))),
         )
 
     @classmethod
@@ -138,6 +143,12 @@ def register_flake8_options(parser: Any) -> None:
         "--rosgraph-cache-dir", default=None, parse_from_config=True, normalize_paths=True,
         help="Where to keep the workspace analysis cache (default: <root>/.rosgraph-cache). "
              "Env: ROSGRAPH_CACHE_DIR.",
+    )
+    parser.add_option(
+        "--rosgraph-interfaces", default=None, parse_from_config=True, comma_separated_list=True,
+        normalize_paths=True,
+        help="Comma-separated folders of interface packages (package.xml with msg/, srv/, "
+             "action/) outside the workspace, for the message rules. Env: ROSGRAPH_INTERFACES.",
     )
     parser.add_option(
         "--rosgraph-debug", default=False, action="store_true", parse_from_config=True,

@@ -18,6 +18,7 @@ from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_t
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec
 from .program import Function
+from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
                      Extern, ExternBound, FuncAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const, join_all, soften)
@@ -238,7 +239,9 @@ class CallSemantics:
         self._escape(args)
         last = qualname.rsplit(".", 1)[-1]
         if last[:1].isupper():
-            return atoms([Obj(self._site(node), Extern(qualname))])
+            obj = Obj(self._site(node), Extern(qualname))
+            self.record_construct(obj, args, node)
+            return atoms([obj])
         return TOP
 
     def call_bound_extern(self, atom: ExternBound, args: "Args", node) -> Value:
@@ -281,7 +284,7 @@ class CallSemantics:
         frame = self.frame
         for index, spec in enumerate(model.effects):
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
-            key = (id(node), model.qualname, index)
+            key = (id(node), model.qualname, index, receiver)
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,
@@ -409,6 +412,8 @@ class CallSemantics:
             if args.kw and not pos:
                 return atoms([DictAtom(tuple((const(k), v) for k, v in args.kw.items()))])
             return atoms([Coll("dict", TOP)])
+        if name == "isinstance" and len(pos) == 2 and not args.kw and not args.star:
+            return isinstance_value(pos[0], pos[1])
         if name in ("isinstance", "issubclass", "hasattr", "callable"):
             return BOOLS
         if name == "getattr" and len(pos) >= 2:

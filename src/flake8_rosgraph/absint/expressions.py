@@ -31,7 +31,9 @@ class ExpressionSemantics:
         return self.load_name(node.id)
 
     def e_Attribute(self, node: ast.Attribute) -> Value:
-        return self.load_attr(self.eval(node.value), node.attr)
+        holder = self.eval(node.value)
+        self.record_attribute_load(node, holder)
+        return self.load_attr(holder, node.attr)
 
     def e_NamedExpr(self, node: ast.NamedExpr) -> Value:
         value = self.eval(node.value)

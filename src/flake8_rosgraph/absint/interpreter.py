@@ -21,12 +21,13 @@ from .values import (BOTTOM, TOP, ClassAtom, Extern, FuncAtom, ModuleAtom, Recor
                      atoms, const)
 from .calls import CallSemantics
 from .expressions import ExpressionSemantics
+from .instances import InstanceFacts
 from .objects import ObjectSemantics
 
 BUILTIN_NAMES = frozenset(dir(builtins))
 
 
-class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
+class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts):
     def __init__(self, analysis: Analysis) -> None:
         self.an = analysis
         self.program = analysis.program
@@ -244,6 +245,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
         elif isinstance(target, ast.Attribute):
             holder = self.eval(target.value)
             self.store_attr(holder, target.attr, value)
+            self.record_attribute_store(target, holder, value)
             if isinstance(target.value, (ast.Name, ast.Attribute)) \
                     and any(isinstance(a, Record) for a in holder):
                 # Records (library value objects such as a QoS profile) are updated in place

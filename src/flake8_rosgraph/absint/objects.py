@@ -31,9 +31,12 @@ class ObjectSemantics:
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
-                if field_value.is_bottom and attr not in self.program.stored_attrs \
-                        and not self._all_user(atom.cls):
-                    return TOP  # nothing here assigns it: the library's attribute
+                if field_value.is_bottom and not self._all_user(atom.cls) and (
+                        attr not in self.program.stored_attrs or isinstance(atom.cls, Extern)):
+                    # Nothing here assigns it: the library's attribute. An instance of a
+                    # library class (a message) has every attribute the library gave it,
+                    # whatever the workspace stores on other objects under that name.
+                    return TOP
                 return field_value
             return field_value.join(found)
         if isinstance(atom, ClassAtom):

@@ -103,6 +103,10 @@ class RosGraph:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     #: The launch systems found in the workspace (``flake8_rosgraph.launch.System``).
     systems: list[Any] = field(default_factory=list)
+    #: What the code builds, fills in and publishes (``flake8_rosgraph.graph.messages.MessageFacts``).
+    messages: Any = None
+    #: The interface definitions known (``flake8_rosgraph.interfaces.catalogue.Catalogue``).
+    interfaces: Any = None
 
     def entities(self, kind: str | None = None):
         """Yield ``(node, entity)`` pairs, optionally of one kind."""

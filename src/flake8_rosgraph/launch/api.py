@@ -98,6 +98,7 @@ def judged_graph(graph: RosGraph, systems: list[System]) -> RosGraph:
     judged = apply_systems(graph, systems, placeholders=False)
     judged.diagnostics = list(graph.diagnostics)
     judged.systems = systems
+    judged.messages, judged.interfaces = graph.messages, graph.interfaces
     return judged
 
 

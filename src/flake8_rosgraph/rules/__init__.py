@@ -19,6 +19,8 @@ from .ros007_duplicate_node_name import DuplicateNodeName
 from .ros008_service_client_without_server import ServiceClientWithoutServer
 from .ros009_action_client_without_server import ActionClientWithoutServer
 from .ros010_unresolved_name import UnresolvedName
+from .ros104_publish_type_mismatch import PublishTypeMismatch
+from .ros107_message_field import MessageField
 from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
@@ -35,6 +37,8 @@ RULES: tuple[Rule, ...] = (
     ServiceClientWithoutServer(),
     ActionClientWithoutServer(),
     UnresolvedName(),
+    PublishTypeMismatch(),
+    MessageField(),
     UnknownExecutable(),
     IneffectiveRemap(),
     InvalidLaunchName(),

@@ -1,0 +1,172 @@
+"""ROS107 message-field."""
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Iterator
+
+from ..graph.messages import FieldRead, FieldStore
+from ..graph.model import RosGraph
+from ..interfaces.catalogue import Catalogue, display_name, message_key
+from ..interfaces.definitions import Field, MessageDef
+from ..interfaces.field_values import rejection, without_none_alternative
+from .base import Finding, Rule, RuleConfig
+
+
+def resolve(catalogue: Catalogue, root: MessageDef, path: tuple[str, ...]
+            ) -> tuple[MessageDef, Field | None, str] | None:
+    """Walk ``path`` down nested message fields: the definition holding the last step, its
+    field (``None`` when that definition has no such field) and the step's name. ``None``
+    when the walk leaves what the catalogue knows (an unknown nested type, an array)."""
+    current = root
+    for depth, name in enumerate(path):
+        found = current.field(name)
+        if found is None or depth == len(path) - 1:
+            return current, found, name
+        if found.type.array is not None or not found.type.is_message:
+            return None
+        nested = catalogue.get(found.type.base)
+        if nested is None:
+            return None
+        current = nested
+    return None
+
+
+#: What a generated message class has besides its fields and constants (rosidl_generator_py).
+_CLASS_ATTRIBUTES = frozenset({"get_fields_and_field_types", "SLOT_TYPES"})
+
+
+def _class_attribute(owner: MessageDef, name: str) -> bool:
+    """A name a message instance has that is not a field: constants, ``<FIELD>__DEFAULT``,
+    the class's own API and private or special names."""
+    return (name in owner.constants or name in _CLASS_ATTRIBUTES or name.startswith("_")
+            or (name.endswith("__DEFAULT") and owner.field(name[:-len("__DEFAULT")].lower()) is not None))
+
+
+def merge_contexts(stores: list[FieldStore]) -> list[FieldStore]:
+    """One store per place, field and way, its value joined over every context the code ran in.
+
+    Code in a function is analysed once per calling context, including contexts met on the
+    way to the fixpoint (a caller's value before it grew to its final one): a value is judged
+    only as the join of them all, and unknown if any of them is."""
+    merged: dict[tuple, FieldStore] = {}
+    for store in stores:
+        key = (store.location, store.message, store.path, store.keyword)
+        known = merged.get(key)
+        if known is None:
+            merged[key] = store
+        elif known.value is not None:
+            value = None if store.value is None else tuple(sorted(set(known.value + store.value), key=repr))
+            merged[key] = replace(known, value=value)
+    return [merged[key] for key in sorted(merged, key=repr)]
+
+
+class MessageField(Rule):
+    """## What it does
+    Checks what code stores in ROS message fields, by attribute or constructor
+    keyword: the field must exist, and the value must be one rclpy accepts for
+    the field's type. Fields read (`msg.dat`) must exist too.
+
+    ## Why is this bad?
+    Generated message classes check every assignment: `String(data=5)`,
+    `twist.linear.x = 1` (an `int` in a `float64` field), `status.level = 300`
+    (out of a `uint8`'s range), `msg.ranges = 0.0` (a scalar for an array) and
+    `header.stamp = self.get_clock().now()` (an `rclpy.time.Time`, not a
+    `builtin_interfaces/Time`) all raise `AssertionError`; a misspelt field
+    raises `AttributeError`. Releases that skip these checks for speed pass the
+    value to C at `publish`, which then fails or silently truncates. Message
+    classes take keyword arguments only: `String('hi')` is a `TypeError`.
+
+    ## Known problems
+    Field definitions come from the standard interface packages shipped with
+    the tool, the workspace's own `.msg`/`.srv`/`.action` files and the folders
+    given with `--rosgraph-interfaces`; a message of any other package is not
+    checked. Only values the analysis knows are judged (constants, message
+    instances, lists of known elements); `msg.x = float(v)` or a value from a
+    parameter of unknown type is accepted. A keyword the class does not have
+    is ignored silently when field checks are off, and is still reported.
+
+    ## Example
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1
+    header = Header(stamp=self.get_clock().now())
+    ```
+
+    ## Use instead
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1.0
+    header = Header(stamp=self.get_clock().now().to_msg())
+    ```
+
+    ## Options
+    None.
+    """
+
+    code = "ROS107"
+    name = "message-field"
+    level = "error"
+    precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
+    summary = "a message field the type does not have, or a value the field's type rejects"
+
+    def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        facts, catalogue = graph.messages, graph.interfaces
+        if facts is None or catalogue is None:
+            return
+        for built in facts.constructions:
+            key = message_key(built.message)
+            if built.positional and catalogue.get(key) is not None:
+                yield Finding(built.location, self.code,
+                              f"{display_name(key)} takes keyword arguments only, not "
+                              f"{built.positional} positional")
+        for store in merge_contexts(facts.stores):
+            finding = self._store_problem(catalogue, store)
+            if finding is not None:
+                yield finding
+        for read in facts.reads:
+            finding = self._read_problem(catalogue, read)
+            if finding is not None:
+                yield finding
+
+    def _read_problem(self, catalogue: Catalogue, read: FieldRead) -> Finding | None:
+        root = catalogue.get(message_key(read.message))
+        resolved = resolve(catalogue, root, read.path) if root is not None else None
+        if resolved is None or resolved[1] is not None or _class_attribute(resolved[0], resolved[2]):
+            return None
+        owner, _, name = resolved
+        return Finding(read.location, self.code, f"{display_name(owner.key)} has no field '{name}'")
+
+    def _store_problem(self, catalogue: Catalogue, store: FieldStore) -> Finding | None:
+        root = catalogue.get(message_key(store.message))
+        if root is None or any(step.startswith("_") for step in store.path):
+            return None
+        resolved = resolve(catalogue, root, store.path)
+        if resolved is None:
+            return None
+        owner, found, name = resolved
+        where = display_name(owner.key)
+        if found is None:
+            what = " (it is a constant)" if name in owner.constants else \
+                " (constructor keyword)" if store.keyword else ""
+            return Finding(store.location, self.code, f"{where} has no field '{name}'{what}")
+        for shape in without_none_alternative(list(store.value or ())):
+            why = rejection(found.type, shape)
+            if why is not None:
+                return Finding(store.location, self.code,
+                               f"{where} field '{name}' ({found.type.spelled()}) rejects {why}"
+                               f"{_hint(found.type.base, shape)}")
+        return None
+
+
+#: rclpy's time classes and the message each one's ``to_msg()`` makes.
+_TO_MSG = {"rclpy.time.Time": "builtin_interfaces/msg/Time",
+           "rclpy.duration.Duration": "builtin_interfaces/msg/Duration"}
+
+
+def _hint(base: str, shape) -> str:
+    """How to write the value the field takes, for the two mistakes everyone makes."""
+    if base in ("float32", "float64") and shape.kind == "int":
+        return f": write {float(shape.value)!r}"
+    if shape.kind == "instance" and _TO_MSG.get(shape.cls) == base:
+        return ": call .to_msg() on it"
+    return ""
