@@ -53,8 +53,21 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
         return []
 
 
+def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic]) -> None:
+    """Add the workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
+    from .cpp.to_graph import cpp_graph
+    try:
+        nodes, cpp_diagnostics = cpp_graph(root)
+    except Exception as exc:
+        diagnostics.append(Diagnostic("", 0, f"C++ sources not read: internal error: "
+                                              f"{type(exc).__name__}: {exc}", "error"))
+        return
+    diagnostics.extend(cpp_diagnostics)
+    graph.nodes = sorted(graph.nodes + nodes, key=lambda n: (n.fqn or "", n.location, n.language))
+
+
 def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
-    """The ROS computation graph of the Python code under ``root``; never raises."""
+    """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises."""
     root = Path(root)
     diagnostics: list[Diagnostic] = []
     try:
@@ -69,6 +82,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
+        _cpp_nodes(root, graph, diagnostics)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]

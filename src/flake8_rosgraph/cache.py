@@ -10,8 +10,8 @@ later run on unchanged code) reads that file.
   sources and built-in stubs), the extra stub files' contents, the options that
   change findings (external topics) and the path and content hash of every
   workspace file the analysis may read (``.py`` plus ROS metadata: package.xml,
-  setup.cfg, launch/parameter files). Any change gives a new key, so a stale
-  entry is never read; old entries are pruned.
+  setup.cfg, launch/parameter files, C++ sources and headers). Any change gives a
+  new key, so a stale entry is never read; old entries are pruned.
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
@@ -37,6 +37,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from . import __version__
+from .cpp import CPP_SUFFIXES
 from .graph.model import Diagnostic, Location
 from .options import Settings
 from .findings import Finding, RuleConfig
@@ -53,8 +54,8 @@ KEEP_ENTRIES = 16
 _SKIP_DIRS = frozenset({"__pycache__", "node_modules"})
 #: Files in a directory that tell ROS tools to skip it.
 _IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
-#: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files).
-_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch"})
+#: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files, C++ partner ends).
+_INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch"}) | CPP_SUFFIXES
 
 
 @dataclass(frozen=True)
