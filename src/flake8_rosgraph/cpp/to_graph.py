@@ -104,6 +104,7 @@ class Joiner:
         self._by_owner: dict[Owner, list[RosNode]] = {}
         self._decl_nodes: dict[str, list[RosNode]] = {}
         self._class_nodes: dict[ClassKey, list[RosNode]] = defaultdict(list)
+        self._node_class_of: dict[int, ClassKey] = {}
 
     def lookup(self, name: str, package: str, path: str) -> ClassKey | None:
         """The class ``name`` means in file ``path``: the file's own, its package's headers', else the one
@@ -185,8 +186,15 @@ class Joiner:
             bucket = entities.get(id(node), {})
             node.entities = [bucket[k] for k in sorted(bucket)]
         # An anonymous node exists only for its entities; a node creation is a node even without any.
-        kept = [n for n in out.values() if n.entities or id(n) not in anonymous]
+        kept = [n for n in out.values() if (n.entities or id(n) not in anonymous) and not self._abstract(n)]
         return sorted(kept, key=lambda n: (n.fqn or "", n.location, n.cls or ""))
+
+    def _abstract(self, node: RosNode) -> bool:
+        """A base class's own node whose name its constructor takes from a parameter, when classes
+        derived from it make the named nodes (``DriverBase(name) : Node(name)``)."""
+        key = self._node_class_of.get(id(node))
+        return node.name is None and key is not None and any(
+            self._class_nodes.get(sub) for sub in self.descendants(key) if sub != key)
 
     def _add_decl(self, decl: NodeDecl) -> None:
         cls_key = None
@@ -201,6 +209,7 @@ class Joiner:
         self._decl_nodes[decl.key] = made
         if cls_key is not None:
             self._class_nodes[cls_key].extend(made)
+            self._node_class_of.update((id(node), cls_key) for node in made)
 
     def owner_nodes(self, owner: Owner, where: Location) -> list[RosNode]:
         """The nodes an entity of ``owner`` is created on (an anonymous one when none is known)."""
@@ -214,7 +223,8 @@ class Joiner:
         elif owner.kind == "class":
             key = self.lookup(owner.name, owner.package, owner.path) or (owner.package, owner.name, owner.path)
             for sub in self.descendants(key):
-                found += [n for n in self._class_nodes.get(sub, ()) if all(n is not f for f in found)]
+                found += [n for n in self._class_nodes.get(sub, ())
+                          if all(n is not f for f in found) and not self._abstract(n)]
             location = self.classes.get(key, where)
         if not found:
             found = [RosNode(None, None, location, cls, language="cpp")]
