@@ -32,7 +32,7 @@ from ..graph.model import Diagnostic, Location
 from .sources import CppSource
 from .syntax import MAX_SYNTAX_NODES, BudgetExceeded, SourceText, damage_diagnostic, text
 from .values import (UNKNOWN, Binding, CtorArg, Evaluator, FileIndex, ParamRef, call_args, is_declare_parameter,
-                     last_name, node_like)
+                     is_syntax, last_name, node_like)
 
 #: Base classes (last name component) that make a class a ROS node.
 NODE_BASES = frozenset({"Node", "LifecycleNode"})
@@ -452,12 +452,12 @@ class _Reader:
         else:
             return None
         owners = {self._owner_of_binding(b, cls, depth) for b in bindings or ()
-                  if b.value is UNKNOWN or isinstance(b.value, ParamRef) or b.value.type not in _NULLS}
+                  if not is_syntax(b.value) or b.value.type not in _NULLS}
         return owners.pop() if len(owners) == 1 else None
 
     def _owner_of_binding(self, binding: Binding, cls: str | None, depth: int) -> Owner | None:
         value = binding.value
-        if value is UNKNOWN or isinstance(value, ParamRef) or value is None:
+        if not is_syntax(value):
             return None
         parent = value.parent
         if value.type in ("argument_list", "initializer_list") and parent is not None:

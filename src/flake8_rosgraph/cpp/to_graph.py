@@ -54,8 +54,9 @@ def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
     for source in sources:
         try:
             files.append(read_file(source, parser))
-        except (RecursionError, MemoryError, ValueError) as exc:  # one file costs only itself
-            diagnostics.append(Diagnostic(source.path, 1, f"C++ file not read: {type(exc).__name__}", "error"))
+        except Exception as exc:  # one file costs only itself, whatever went wrong in it
+            diagnostics.append(Diagnostic(source.path, 1, f"C++ file not read: internal error: "
+                                                          f"{type(exc).__name__}: {exc}"[:200], "error"))
     joiner = Joiner(files)
     nodes = joiner.nodes()
     diagnostics += [d for f in files for d in f.diagnostics] + joiner.diagnostics

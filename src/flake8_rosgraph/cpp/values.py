@@ -67,6 +67,11 @@ class Binding:
     func: Any = None
 
 
+def is_syntax(value: Any) -> bool:
+    """Whether a binding's value is an expression (not :data:`UNKNOWN`, :class:`ParamRef`, :class:`CtorArg`)."""
+    return value is not None and not isinstance(value, (_Unknown, ParamRef, CtorArg))
+
+
 def key(node: Any) -> Key:
     """A syntax node's identity within its file."""
     return (node.start_byte, node.end_byte)
