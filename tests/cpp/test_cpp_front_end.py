@@ -510,3 +510,22 @@ def test_declare_parameter_spellings(name):
     from flake8_rosgraph.cpp.values import is_declare_parameter
     assert is_declare_parameter(name)
     assert not is_declare_parameter("declare_parameters")
+
+
+def test_an_internal_error_in_one_file_costs_only_that_file(tmp_path, monkeypatch):
+    write_package(tmp_path, "two", {"src/talker.cpp": TALKER_CPP, "src/other.cpp": """
+        #include "rclcpp/rclcpp.hpp"
+        int main() { auto n = rclcpp::Node::make_shared("other"); }
+    """})
+    real = to_graph.read_file
+
+    def failing(source, parser):
+        if source.path.endswith("talker.cpp"):
+            raise KeyError("boom")
+        return real(source, parser)
+
+    monkeypatch.setattr(to_graph, "read_file", failing)
+    nodes, diags = cpp_graph(tmp_path)
+    assert [n.fqn for n in nodes] == ["/other"]
+    assert [(d.path, d.severity) for d in diags if "internal error" in d.message] == [
+        ("src/two/src/talker.cpp", "error")]

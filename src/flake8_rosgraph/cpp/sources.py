@@ -4,15 +4,16 @@ Only files inside a ROS package (a folder with ``package.xml`` at or above
 them) are read; folders marked ``COLCON_IGNORE``/``AMENT_IGNORE``/``CATKIN_IGNORE``,
 colcon's ``build``/``install``/``log`` and hidden folders are skipped, symlinked
 folders are not followed, and only regular files are opened. Only files that
-mention ``rclcpp`` (or include such a file) are parsed: that keeps large C++
-workspaces (vendored libraries, drivers) cheap.
+mention ``rclcpp`` are parsed, and those that derive from a node class of such a
+file (see :func:`flake8_rosgraph.cpp.to_graph.cpp_graph`): that keeps large C++
+workspaces (vendored libraries, algorithms, tests) cheap.
 """
 from __future__ import annotations
 
 import os
 import stat
 from dataclasses import dataclass
-from pathlib import Path, PurePosixPath
+from pathlib import Path
 
 from ..graph.model import Diagnostic
 from ..workspace import SKIP_DIRS, relative
@@ -68,8 +69,7 @@ def _read(path: Path, rel: str) -> bytes | Diagnostic:
 
 
 def cpp_sources(root: Path) -> tuple[list[CppSource], list[Diagnostic]]:
-    """The C++ files of ``root``'s packages worth parsing (see :func:`worth_parsing`), and why others
-    could not be read."""
+    """Every readable C++ file of ``root``'s packages, and why others could not be read."""
     root = Path(root)
     if not root.is_dir():
         return [], []
@@ -82,30 +82,19 @@ def cpp_sources(root: Path) -> tuple[list[CppSource], list[Diagnostic]]:
             diagnostics.append(data)
         else:
             sources.append(CppSource(rel, package, data))
-    return worth_parsing(sources), diagnostics
+    return sources, diagnostics
 
 
-def _included_names(data: bytes) -> set[str]:
+def mentions_rclcpp(source: CppSource) -> bool:
+    return RCLCPP_MARKER in source.data
+
+
+def included_names(source: CppSource) -> set[str]:
     """The file names (last path component) of the ``#include`` lines of a file."""
     names = set()
-    for line in data.splitlines():
+    for line in source.data.splitlines():
         line = line.strip()
         if line.startswith(b"#") and line[1:].lstrip().startswith(b"include"):
             target = line[1:].lstrip()[len(b"include"):].strip().strip(b'<>"')
             names.add(target.rsplit(b"/", 1)[-1].decode("utf-8", "replace"))
     return names
-
-
-def worth_parsing(sources: list[CppSource]) -> list[CppSource]:
-    """The files that mention rclcpp, and those that include one of them (a node class derived from a
-    workspace node class need not name rclcpp itself)."""
-    chosen = [s for s in sources if RCLCPP_MARKER in s.data]
-    rest = [s for s in sources if RCLCPP_MARKER not in s.data]
-    while rest:
-        headers = {PurePosixPath(s.path).name for s in chosen}
-        more = [s for s in rest if _included_names(s.data) & headers]
-        if not more:
-            break
-        chosen += more
-        rest = [s for s in rest if s not in more]
-    return sorted(chosen, key=lambda s: s.path)

@@ -23,14 +23,14 @@ from __future__ import annotations
 
 import re
 from collections import defaultdict
-from pathlib import Path
-from typing import Iterable
+from pathlib import Path, PurePosixPath
+from typing import Any, Iterable
 
 from ..graph import names
 from ..graph.builder import _entity_order, _node_problem, _param_problem, resolve_name
 from ..graph.model import Diagnostic, Entity, Location, RosNode
 from .extract import NODE_BASES, FileFacts, NodeDecl, Owner, read_file
-from .sources import cpp_sources
+from .sources import CppSource, cpp_sources, included_names, mentions_rclcpp
 from .syntax import load_parser
 
 _INTERFACE = re.compile(r"^(?:::)?([A-Za-z_]\w*)::(msg|srv|action)::([A-Za-z_]\w*)$")
@@ -43,13 +43,32 @@ ClassKey = tuple[str, str, str]  # (package, class name, defining source file or
 
 
 def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
-    """The rclcpp nodes of the workspace under ``root`` and what reading them could not do."""
+    """The rclcpp nodes of the workspace under ``root`` and what reading them could not do.
+
+    Parsed: the files that mention rclcpp, then those that include a header defining one of
+    their node classes and name that class (``LeftDriver : public DriverBase`` need not name
+    rclcpp itself).
+    """
     sources, diagnostics = cpp_sources(root)
-    if not sources:
+    first = [s for s in sources if mentions_rclcpp(s)]
+    if not first:
         return [], diagnostics
     parser, why_not = load_parser()
     if parser is None:
-        return [], diagnostics + [Diagnostic(sources[0].path, 1, why_not or "", "warning")]
+        return [], diagnostics + [Diagnostic(first[0].path, 1, why_not or "", "warning")]
+    files = _read_all(first, parser, diagnostics)
+    node_headers = Joiner(files).node_class_headers()
+    derived = [s for s in sources if not mentions_rclcpp(s)
+               and any(header in node_headers and any(name.encode() in s.data for name in node_headers[header])
+                       for header in included_names(s))]
+    files += _read_all(derived, parser, diagnostics)
+    joiner = Joiner(files)
+    nodes = joiner.nodes()
+    diagnostics += [d for f in files for d in f.diagnostics] + joiner.diagnostics
+    return nodes, diagnostics
+
+
+def _read_all(sources: list[CppSource], parser: Any, diagnostics: list[Diagnostic]) -> list[FileFacts]:
     files: list[FileFacts] = []
     for source in sources:
         try:
@@ -57,10 +76,7 @@ def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
         except Exception as exc:  # one file costs only itself, whatever went wrong in it
             diagnostics.append(Diagnostic(source.path, 1, f"C++ file not read: internal error: "
                                                           f"{type(exc).__name__}: {exc}"[:200], "error"))
-    joiner = Joiner(files)
-    nodes = joiner.nodes()
-    diagnostics += [d for f in files for d in f.diagnostics] + joiner.diagnostics
-    return nodes, diagnostics
+    return files
 
 
 def interface_type(written: str | None, aliases: Iterable[dict[str, str]]) -> str | None:
@@ -126,6 +142,14 @@ class Joiner:
     def _is_node_base(self, base: str, package: str, path: str) -> bool:
         found = self.lookup(base, package, path)
         return found is not None and self.is_node_class(found)
+
+    def node_class_headers(self) -> dict[str, set[str]]:
+        """Header file name → the node classes it defines."""
+        out: dict[str, set[str]] = defaultdict(set)
+        for key, location in self.classes.items():
+            if not key[2] and self.is_node_class(key):
+                out[PurePosixPath(location.path).name].add(key[1])
+        return out
 
     def descendants(self, key: ClassKey) -> list[ClassKey]:
         out: list[ClassKey] = []
