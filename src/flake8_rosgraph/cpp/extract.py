@@ -163,6 +163,7 @@ def read_file(source: CppSource, parser: Any) -> FileFacts:
     except BudgetExceeded:
         facts.diagnostics.append(Diagnostic(source.path, 1, f"C++ file read in part: more than "
                                                             f"{MAX_SYNTAX_NODES} syntax nodes", "warning"))
+    reader.index.settle()
     reader.second_pass()
     return facts
 
@@ -209,7 +210,6 @@ class _Reader:
             children = node.named_children
             children.reverse()
             stack += [(child, func, cls) for child in children]
-        self.index.settle()
 
     def _class(self, node: Any) -> str | None:
         name = node.child_by_field_name("name")
@@ -283,12 +283,15 @@ class _Reader:
         left, right = node.child_by_field_name("left"), node.child_by_field_name("right")
         operator = node.child_by_field_name("operator")
         binding = Binding(right, func) if operator is not None and text(operator) == "=" else Binding(UNKNOWN)
-        if left is None:
-            return
-        if left.type == "identifier":
-            self.index.assign(func, text(left), binding)
-        elif left.type == "field_expression" and _is_self(left.child_by_field_name("argument")):
-            self.index.members.setdefault(text(left.child_by_field_name("field")), []).append(binding)
+        if left is not None:
+            self._bind(left, func, binding)
+
+    def _bind(self, target: Any, func: Any, binding: Binding) -> None:
+        """Record a value given to ``x`` (local or member, sorted out later) or ``this->x`` (a member)."""
+        if target.type == "identifier":
+            self.index.assign(func, text(target), binding)
+        elif target.type == "field_expression" and _is_self(target.child_by_field_name("argument")):
+            self.index.members.setdefault(text(target.child_by_field_name("field")), []).append(binding)
 
     def _call(self, node: Any, func: Any, cls: str | None) -> None:
         function = node.child_by_field_name("function")
@@ -305,10 +308,7 @@ class _Reader:
             ref = Binding(ParamRef(args[0], func), func)
             bindings = [ref, Binding(args[2], func)] if name == "get_parameter_or" and len(args) > 2 else [ref]
             for binding in bindings:
-                if out.type == "identifier":
-                    self.index.assign(func, text(out), binding)
-                elif out.type == "field_expression" and _is_self(out.child_by_field_name("argument")):
-                    self.index.members.setdefault(text(out.child_by_field_name("field")), []).append(binding)
+                self._bind(out, func, binding)
         made = _made_class(function) if name in ("make_shared", "make_unique") else None
         if made is not None and made not in NODE_BASES:
             self.index.constructions.setdefault(made, []).append((args, func))
@@ -384,12 +384,9 @@ class _Reader:
 
     def _decl(self, node: Any, args: list[Any], func: Any, cls: str | None, base: str) -> None:
         names = self._choices(args[0], func) if args else (None,)
-        if len(args) >= 3 or (len(args) == 2 and args[1].type in ("string_literal", "concatenated_string")):
-            namespaces = self._choices(args[1], func)
-        elif len(args) == 2 and self.values.strings(args[1], func) is not None:
-            namespaces = self._choices(args[1], func)
-        else:
-            namespaces = ("",)
+        namespaces: tuple[str | None, ...] = ("",)  # Node(name) and Node(name, options): the root
+        if len(args) >= 3 or (len(args) == 2 and self.values.strings(args[1], func) is not None):
+            namespaces = self._choices(args[1], func)  # Node(name, namespace[, options])
         self.facts.decls.append(NodeDecl(self._key(node), names, namespaces, self.src.location(node),
                                          self.facts.package, cls, base))
 

@@ -7,13 +7,14 @@ local, so the rest of the file is still read. One diagnostic per damaged file
 names the first damaged line: a warning when a damaged region holds an rclcpp
 call (a call may be missed there), else an informational one.
 
-The walk is iterative with a budget of syntax nodes per file, so neither deep
-nesting nor a huge file can exhaust the stack or the time.
+The readers walk trees iteratively with a budget of syntax nodes per file
+(:data:`MAX_SYNTAX_NODES`), so neither deep nesting nor a huge file can exhaust
+the stack or the time.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Iterator
+from typing import Any
 
 from ..graph.model import Diagnostic, Location
 
@@ -56,19 +57,6 @@ class SourceText:
 
 def text(node: Any) -> str:
     return node.text.decode("utf-8", "replace")
-
-
-def walk(root: Any) -> Iterator[Any]:
-    """Every syntax node under ``root``, parents first, in source order; raises :class:`BudgetExceeded`."""
-    stack = [root]
-    seen = 0
-    while stack:
-        node = stack.pop()
-        seen += 1
-        if seen > MAX_SYNTAX_NODES:
-            raise BudgetExceeded
-        yield node
-        stack.extend(reversed(node.children))
 
 
 def damage_diagnostic(source: SourceText, root: Any) -> Diagnostic | None:
