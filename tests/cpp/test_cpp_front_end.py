@@ -369,6 +369,10 @@ def test_services_and_actions_in_every_spelling(tmp_path):
             client_ = rclcpp_action::create_client<Fibonacci>(shared_from_this(), "remote_fibonacci");
             add_ = create_service<AddTwoInts>("add_two_ints", cb);
             call_ = create_client<AddTwoInts>("remote_add");
+            base_ = rclcpp::Node::create_client<AddTwoInts>("base_add");
+            free_ = rclcpp::create_client<AddTwoInts>(
+              get_node_base_interface(), get_node_graph_interface(), get_node_services_interface(),
+              "free_add", rclcpp::ServicesQoS(), nullptr);
           }
         };
     """})
@@ -376,7 +380,8 @@ def test_services_and_actions_in_every_spelling(tmp_path):
     assert endpoints(tmp_path) == {
         ("/server", "action_servers", "/fibonacci", fib), ("/server", "action_servers", "/fibonacci_legacy", fib),
         ("/server", "action_clients", "/remote_fibonacci", fib),
-        ("/server", "services", "/add_two_ints", add), ("/server", "clients", "/remote_add", add)}
+        ("/server", "services", "/add_two_ints", add), ("/server", "clients", "/remote_add", add),
+        ("/server", "clients", "/base_add", add), ("/server", "clients", "/free_add", add)}
 
 
 def test_interface_type_spellings():

@@ -571,9 +571,10 @@ def _endpoint_form(function: Any, args: list[Any]) -> tuple[str, int, Any] | Non
     if name in ACTION_FUNCTIONS and ("rclcpp_action" in scope or (not scoped and first_is_node)):
         return ACTION_FUNCTIONS[name], _name_index(args), args[0] if args else None
     if name in METHOD_KINDS:
-        if scoped:
+        owner_scope = last_name(scope)
+        if scoped and not (owner_scope in NODE_BASES or owner_scope[:1].isupper()):
             return METHOD_KINDS[name], _name_index(args), args[0] if args else None
-        return METHOD_KINDS[name], 0, None
+        return METHOD_KINDS[name], 0, None  # a member function's own node (``Node::create_publisher`` too)
     return None
 
 
