@@ -190,6 +190,33 @@ def test_entities_of_a_base_class_belong_to_the_derived_nodes(tmp_path):
     assert endpoints(tmp_path) == {("/left_driver", "publishers", "/temperature", "std_msgs/msg/Float64")}
 
 
+def test_a_plugin_source_that_names_rclcpp_only_through_its_header(tmp_path):
+    write_package(tmp_path, "filters", {
+        "include/filters/speed_filter.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            #include "nav2_msgs/msg/speed_limit.hpp"
+            using NodePtr = std::shared_ptr<rclcpp::Node>;
+            class SpeedFilter
+            {
+            public:
+              void activate(NodePtr node);
+            };
+        """,
+        "src/speed_filter.cpp": """
+            #include "filters/speed_filter.hpp"
+            void SpeedFilter::activate(NodePtr node)
+            {
+              node->create_publisher<nav2_msgs::msg::SpeedLimit>("/speed_limit", 1);
+            }
+        """,
+        "src/math.cpp": """
+            #include "filters/speed_filter.hpp"
+            double clamp(double v) { return v < 0 ? 0 : v; }
+        """,
+    })
+    assert endpoints(tmp_path) == {(None, "publishers", "/speed_limit", "nav2_msgs/msg/SpeedLimit")}
+
+
 def test_names_from_constants_of_the_same_file(tmp_path):
     write_package(tmp_path, "consts", {"src/node.cpp": """
         #include <string>
@@ -461,7 +488,8 @@ def test_discovery_respects_packages_ignore_markers_build_folders_and_limits(tmp
     write_package(tmp_path, "ignored", {"src/ignored.cpp": node.format(name="ignored")})
     (tmp_path / "src" / "ignored" / "COLCON_IGNORE").write_text("")
     write_package(tmp_path, "built", {"build/gen.cpp": node.format(name="built"),
-                                      ".hidden/gen.cpp": node.format(name="hidden")})
+                                      ".hidden/gen.cpp": node.format(name="hidden"),
+                                      "test/test_node.cpp": node.format(name="gtest_node")})
     (tmp_path / "tools").mkdir()
     (tmp_path / "tools" / "loose.cpp").write_text(textwrap.dedent(node.format(name="loose")))
     write_package(tmp_path, "plain", {"src/math.cpp": "int add(int a, int b) { return a + b; }\n"})

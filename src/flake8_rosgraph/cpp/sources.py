@@ -1,7 +1,7 @@
 """Finding and reading the C++ sources of a workspace's ROS packages, within limits.
 
 Only files inside a ROS package (a folder with ``package.xml`` at or above
-them) are read; folders marked ``COLCON_IGNORE``/``AMENT_IGNORE``/``CATKIN_IGNORE``,
+them) are read, not those of ``test``/``tests`` folders; folders marked ``COLCON_IGNORE``/``AMENT_IGNORE``/``CATKIN_IGNORE``,
 colcon's ``build``/``install``/``log`` and hidden folders are skipped, symlinked
 folders are not followed, and only regular files are opened. Only files that
 mention ``rclcpp`` are parsed, and those that derive from a node class of such a
@@ -23,6 +23,9 @@ from . import CPP_SUFFIXES
 MAX_CPP_FILE_BYTES = 1024 * 1024
 #: Marker files that tell ROS build tools to skip a folder.
 IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+#: Folders of C++ tests (gtest): their nodes drive the package under test, and as partners they
+#: would connect Python ends that nothing connects in a running system.
+TEST_DIRS = frozenset({"test", "tests"})
 #: What a file must contain to be parsed at all.
 RCLCPP_MARKER = b"rclcpp"
 
@@ -44,7 +47,8 @@ def _package_files(root: Path) -> list[tuple[Path, str]]:
         if any(marker in filenames for marker in IGNORE_MARKERS):
             dirnames[:] = []
             continue
-        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        dirnames[:] = sorted(d for d in dirnames
+                             if d not in SKIP_DIRS and d not in TEST_DIRS and not d.startswith("."))
         parent = packages.get(os.path.dirname(dirpath), "")
         package = relative(Path(dirpath), root) if "package.xml" in filenames else parent
         packages[dirpath] = package

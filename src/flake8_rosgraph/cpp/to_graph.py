@@ -45,9 +45,8 @@ ClassKey = tuple[str, str, str]  # (package, class name, defining source file or
 def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
     """The rclcpp nodes of the workspace under ``root`` and what reading them could not do.
 
-    Parsed: the files that mention rclcpp, then those that include a header defining one of
-    their node classes and name that class (``LeftDriver : public DriverBase`` need not name
-    rclcpp itself).
+    Parsed: the files that mention rclcpp, then those that include one of their headers and either
+    create entities or name a node class of that header (see :func:`_through_headers`).
     """
     sources, diagnostics = cpp_sources(root)
     first = [s for s in sources if mentions_rclcpp(s)]
@@ -58,14 +57,27 @@ def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
         return [], diagnostics + [Diagnostic(first[0].path, 1, why_not or "", "warning")]
     files = _read_all(first, parser, diagnostics)
     node_headers = Joiner(files).node_class_headers()
-    derived = [s for s in sources if not mentions_rclcpp(s)
-               and any(header in node_headers and any(name.encode() in s.data for name in node_headers[header])
-                       for header in included_names(s))]
-    files += _read_all(derived, parser, diagnostics)
+    parsed_headers = {PurePosixPath(f.path).name for f in files}
+    second = [s for s in sources if not mentions_rclcpp(s) and _through_headers(s, parsed_headers, node_headers)]
+    files += _read_all(second, parser, diagnostics)
     joiner = Joiner(files)
     nodes = joiner.nodes()
     diagnostics += [d for f in files for d in f.diagnostics] + joiner.diagnostics
     return nodes, diagnostics
+
+
+#: Text that marks a file as one that may create an entity (through an included header's types).
+_CREATION_MARKERS = (b"create_publisher", b"create_subscription", b"create_service", b"create_client",
+                     b"create_server", b"create_action_")
+
+
+def _through_headers(source: CppSource, parsed: set[str], node_headers: dict[str, set[str]]) -> bool:
+    """Whether a file that does not name rclcpp still takes part: it includes a header read in the first
+    round and creates entities (a plugin's ``.cpp`` whose header includes rclcpp) or names one of that
+    header's node classes (``LeftDriver : public DriverBase``)."""
+    included = included_names(source) & parsed
+    return bool(included) and (any(m in source.data for m in _CREATION_MARKERS) or any(
+        name.encode() in source.data for header in included for name in node_headers.get(header, ())))
 
 
 def _read_all(sources: list[CppSource], parser: Any, diagnostics: list[Diagnostic]) -> list[FileFacts]:
