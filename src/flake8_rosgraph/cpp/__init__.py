@@ -10,7 +10,9 @@ objects with ``language="cpp"``:
 * :mod:`.syntax` parses them (tree-sitter) and reports damaged regions;
 * :mod:`.values` evaluates the strings a name is built from (literals, constants of
   the same file, ``declare_parameter`` defaults);
-* :mod:`.extract` finds the rclcpp calls, node classes and node creations of one file;
+* :mod:`.calls` knows the shapes of rclcpp calls (which call creates what, through which node);
+* :mod:`.extract` finds the rclcpp calls, node classes and node creations of one file
+  (records in :mod:`.facts`);
 * :mod:`.to_graph` joins the files' facts into nodes and entities, names expanded by rcl
   rules (:mod:`flake8_rosgraph.graph.names`);
 * :mod:`.reporting` keeps findings at the Python end: C++ ends are partners only.

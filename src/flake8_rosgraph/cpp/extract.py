@@ -25,27 +25,18 @@ Calls inside a region tree-sitter could not parse are skipped.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
-from ..graph.model import Diagnostic, Location
+from ..graph.model import Diagnostic
+from .calls import (ACTION_FUNCTIONS, COMPONENT_MACRO, METHOD_KINDS, NODE_BASES, called_name, creates_node,
+                    endpoint_form, is_self, made_class, qos_of, receiver_of, template_argument)
+from .facts import ClassFact, EndpointFact, FileFacts, NodeDecl, Owner, ParameterFact
 from .sources import CppSource
 from .syntax import MAX_SYNTAX_NODES, BudgetExceeded, SourceText, damage_diagnostic, text
 from .values import (UNKNOWN, Binding, CtorArg, Evaluator, FileIndex, ParamRef, call_args, is_declare_parameter,
                      is_syntax, last_name, node_like)
 
-#: Base classes (last name component) that make a class a ROS node.
-NODE_BASES = frozenset({"Node", "LifecycleNode"})
-#: Node methods creating a named entity: method name → entity kind; the name is the first argument.
-METHOD_KINDS: dict[str, str] = {
-    "create_publisher": "publishers", "create_subscription": "subscriptions",
-    "create_service": "services", "create_client": "clients",
-    "create_action_server": "action_servers", "create_action_client": "action_clients",
-}
-#: ``rclcpp_action`` free functions: the node (or its interfaces) first, then the name.
-ACTION_FUNCTIONS: dict[str, str] = {"create_server": "action_servers", "create_client": "action_clients"}
-COMPONENT_MACRO = "RCLCPP_COMPONENTS_REGISTER_NODE"
-HEADER_SUFFIXES = (".h", ".hh", ".hpp", ".hxx")
 _SCOPES = ("class_specifier", "struct_specifier")
 #: Syntax that never holds a binding or a call worth reading.
 _OPAQUE = frozenset({"comment", "string_literal", "raw_string_literal", "concatenated_string", "number_literal",
@@ -60,84 +51,6 @@ _NULLS = frozenset({"nullptr", "null"})
 _BINDING_CALLS = frozenset({COMPONENT_MACRO, "get_parameter", "get_parameter_or"})
 _DECLARATORS = ("pointer_declarator", "reference_declarator", "array_declarator", "init_declarator",
                 "function_declarator", "parenthesized_declarator")
-
-
-@dataclass(frozen=True)
-class Owner:
-    """Which node an entity is created on: a node class, one node creation, or an anonymous node."""
-
-    kind: str  # "class" | "decl" | "anonymous"
-    package: str
-    name: str  # the class name, the creation's key, or the anonymous node's scope
-    path: str
-
-
-@dataclass(frozen=True)
-class ClassFact:
-    """A class definition. One in a header is the package's; one in a source file is that file's own
-    (two executables of a package may each define their own ``MinimalPublisher``)."""
-
-    package: str
-    name: str
-    bases: tuple[str, ...]
-    location: Location
-
-    @property
-    def scope(self) -> str:
-        return "" if is_header(self.location.path) else self.location.path
-
-
-def is_header(path: str) -> bool:
-    return path.endswith(HEADER_SUFFIXES)
-
-
-@dataclass(frozen=True)
-class NodeDecl:
-    """A node creation: ``names``/``namespaces`` hold every possible value (``None``: unknown).
-
-    ``cls`` is the class whose constructor passes the name to its base ``base``
-    (``None`` for ``make_shared<rclcpp::Node>`` and the like, which are nodes anyway).
-    """
-
-    key: str
-    names: tuple[str | None, ...]
-    namespaces: tuple[str | None, ...]
-    location: Location
-    package: str
-    cls: str | None = None
-    base: str | None = None
-
-
-@dataclass(frozen=True)
-class EndpointFact:
-    kind: str
-    names: tuple[str | None, ...]
-    type_written: str | None
-    qos: tuple[tuple[str, Any], ...] | None
-    location: Location
-    owner: Owner
-    written: str
-
-
-@dataclass(frozen=True)
-class ParameterFact:
-    name: str
-    default: Any
-    location: Location
-    owner: Owner
-
-
-@dataclass
-class FileFacts:
-    path: str
-    package: str
-    classes: list[ClassFact] = field(default_factory=list)
-    decls: list[NodeDecl] = field(default_factory=list)
-    endpoints: list[EndpointFact] = field(default_factory=list)
-    parameters: list[ParameterFact] = field(default_factory=list)
-    components: list[str] = field(default_factory=list)
-    aliases: dict[str, str] = field(default_factory=dict)
-    diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -290,14 +203,14 @@ class _Reader:
         """Record a value given to ``x`` (local or member, sorted out later) or ``this->x`` (a member)."""
         if target.type == "identifier":
             self.index.assign(func, text(target), binding)
-        elif target.type == "field_expression" and _is_self(target.child_by_field_name("argument")):
+        elif target.type == "field_expression" and is_self(target.child_by_field_name("argument")):
             self.index.members.setdefault(text(target.child_by_field_name("field")), []).append(binding)
 
     def _call(self, node: Any, func: Any, cls: str | None) -> None:
         function = node.child_by_field_name("function")
         if function is None:
             return
-        name = _called_name(function)
+        name = called_name(function)
         if name not in _BINDING_CALLS and name not in _INTERESTING_CALLS and not is_declare_parameter(name):
             return
         args = call_args(node)
@@ -309,7 +222,7 @@ class _Reader:
             bindings = [ref, Binding(args[2], func)] if name == "get_parameter_or" and len(args) > 2 else [ref]
             for binding in bindings:
                 self._bind(out, func, binding)
-        made = _made_class(function) if name in ("make_shared", "make_unique") else None
+        made = made_class(function) if name in ("make_shared", "make_unique") else None
         if made is not None and made not in NODE_BASES:
             self.index.constructions.setdefault(made, []).append((args, func))
         if not node.has_error and (name in _INTERESTING_CALLS or is_declare_parameter(name)):
@@ -353,7 +266,7 @@ class _Reader:
 
     def _declared_parameter(self, site: _Site) -> None:
         function = site.call.child_by_field_name("function")
-        name = _called_name(function)
+        name = called_name(function)
         if not is_declare_parameter(name):
             return
         args = call_args(site.call)
@@ -363,7 +276,7 @@ class _Reader:
         param, default = found
         self.index.parameter_defaults.setdefault(param, []).append(
             Binding(default if default is not None else UNKNOWN, site.func))
-        receiver = _receiver(function)
+        receiver = receiver_of(function)
         if function.type != "field_expression" and len(args) >= 2 and node_like(args[0]):
             receiver = args[0]
         owner = self.owner(receiver, site.func, site.cls)
@@ -379,7 +292,7 @@ class _Reader:
 
     def _node_creation(self, site: _Site) -> None:
         function = site.call.child_by_field_name("function")
-        if _creates_node(function):
+        if creates_node(function):
             self._decl(site.call, call_args(site.call), site.func, None, "Node")
 
     def _decl(self, node: Any, args: list[Any], func: Any, cls: str | None, base: str) -> None:
@@ -393,14 +306,14 @@ class _Reader:
     def _endpoint(self, site: _Site) -> None:
         call = site.call
         function = call.child_by_field_name("function")
-        form = _endpoint_form(function, call_args(call))
+        form = endpoint_form(function, call_args(call))
         if form is None:
             return
         kind, name_index, receiver = form
         args = call_args(call)
         if name_index >= len(args):
             return
-        qos = _qos(args[name_index + 1]) if kind in ("publishers", "subscriptions") \
+        qos = qos_of(args[name_index + 1]) if kind in ("publishers", "subscriptions") \
             and name_index + 1 < len(args) else None
         written = text(call).split("\n", 1)[0][:80]
         self.values.read_parameter = False
@@ -410,7 +323,7 @@ class _Reader:
             # and the C++ nodes are not bound to launch files, so the name may also be another one.
             names += (None,)
         self.facts.endpoints.append(EndpointFact(
-            kind, names, _template_argument(function), qos,
+            kind, names, template_argument(function), qos,
             self.src.location(call), self.owner(receiver, site.func, site.cls), written))
 
     # -- helpers ---------------------------------------------------------------------------------
@@ -432,19 +345,19 @@ class _Reader:
     def _owner(self, receiver: Any, func: Any, cls: str | None, depth: int) -> Owner | None:
         if depth > 6:
             return None
-        if receiver is None or _is_self(receiver):
+        if receiver is None or is_self(receiver):
             return Owner("class", self.facts.package, cls, self.src.path) if cls else None
         if receiver.type == "call_expression":
             function = receiver.child_by_field_name("function")
-            name = _called_name(function)
+            name = called_name(function)
             if name.endswith("_interface") or name in ("get", "shared_from_this"):
-                return self._owner(_receiver(function), func, cls, depth + 1)
-            if _creates_node(function):
+                return self._owner(receiver_of(function), func, cls, depth + 1)
+            if creates_node(function):
                 return Owner("decl", self.facts.package, self._key(receiver), self.src.path)
             return None
         if receiver.type == "identifier":
             bindings = self.index.bindings(text(receiver), func)
-        elif receiver.type == "field_expression" and _is_self(receiver.child_by_field_name("argument")):
+        elif receiver.type == "field_expression" and is_self(receiver.child_by_field_name("argument")):
             bindings = self.index.bindings(text(receiver.child_by_field_name("field")), func, member_only=True)
         else:
             return None
@@ -464,7 +377,7 @@ class _Reader:
             return self._owner(inner[0], binding.func, cls, depth + 1) if len(inner) == 1 else None
         if value.type == "call_expression":
             function = value.child_by_field_name("function")
-            made = _made_class(function)
+            made = made_class(function)
             if made is not None and made not in NODE_BASES:
                 return Owner("class", self.facts.package, made, self.src.path)
         return self._owner(value, binding.func, cls, depth + 1)
@@ -472,15 +385,6 @@ class _Reader:
 
 def call_args_of(args_node: Any) -> list[Any]:
     return [a for a in args_node.named_children if a.type != "comment"] if args_node is not None else []
-
-
-def _is_self(node: Any) -> bool:
-    """``this`` or ``*this``."""
-    if node is None:
-        return False
-    if node.type == "pointer_expression":
-        node = node.child_by_field_name("argument")
-    return node is not None and node.type == "this"
 
 
 def _declared_name(declarator: Any) -> str | None:
@@ -517,82 +421,3 @@ def _method_class(func: Any) -> str | None:
         return None
     scope = text(name).rsplit("::", 1)[0]
     return last_name(scope) or None
-
-
-def _called_name(function: Any) -> str:
-    if function.type == "field_expression":
-        function = function.child_by_field_name("field") or function
-    return last_name(text(function))
-
-
-def _receiver(function: Any) -> Any:
-    return function.child_by_field_name("argument") if function.type == "field_expression" else None
-
-
-def _made_class(function: Any) -> str | None:
-    """``X`` for ``std::make_shared<X>`` / ``X::make_shared``, ``None`` for any other callee."""
-    written = text(function).replace(" ", "")
-    head = written.split("<", 1)[0]
-    if last_name(head) == "make_shared" and "<" in written and head.rsplit("::", 1)[-1] == "make_shared" \
-            and (head == "make_shared" or head.endswith("std::make_shared")):
-        return last_name(written[written.index("<") + 1:written.rindex(">")])
-    if last_name(head) == "make_unique" and "<" in written:
-        return last_name(written[written.index("<") + 1:written.rindex(">")])
-    if written.endswith("::make_shared"):
-        return last_name(written[:-len("::make_shared")])
-    return None
-
-
-def _creates_node(function: Any) -> bool:
-    return _made_class(function) in NODE_BASES
-
-
-def _template_argument(function: Any) -> str | None:
-    """The first template argument of the callee (``std_msgs::msg::String``), as written."""
-    while function is not None:
-        if function.type in ("template_function", "template_method"):
-            arguments = function.child_by_field_name("arguments")
-            first = arguments.named_children[0] if arguments is not None and arguments.named_children \
-                else None
-            return text(first).replace(" ", "") if first is not None else None
-        function = function.child_by_field_name("field" if function.type == "field_expression" else "name")
-    return None
-
-
-def _endpoint_form(function: Any, args: list[Any]) -> tuple[str, int, Any] | None:
-    """``(kind, index of the name argument, receiver)`` when the call creates an entity."""
-    name = _called_name(function)
-    if function.type == "field_expression":
-        kind = METHOD_KINDS.get(name)
-        return None if kind is None else (kind, 0, function.child_by_field_name("argument"))
-    scoped = function.type == "qualified_identifier"
-    scope = text(function).split("<", 1)[0].rsplit("::", 1)[0] if scoped else ""
-    first_is_node = bool(args) and node_like(args[0]) and args[0].type != "string_literal"
-    if name in ACTION_FUNCTIONS and ("rclcpp_action" in scope or (not scoped and first_is_node)):
-        return ACTION_FUNCTIONS[name], _name_index(args), args[0] if args else None
-    if name in METHOD_KINDS:
-        owner_scope = last_name(scope)
-        if scoped and not (owner_scope in NODE_BASES or owner_scope[:1].isupper()):
-            return METHOD_KINDS[name], _name_index(args), args[0] if args else None
-        return METHOD_KINDS[name], 0, None  # a member function's own node (``Node::create_publisher`` too)
-    return None
-
-
-def _name_index(args: list[Any]) -> int:
-    """Where the name is in a free function's arguments: after the node, or after its interfaces."""
-    interfaces = 0
-    for arg in args:
-        if "interface" not in text(arg):
-            break
-        interfaces += 1
-    return interfaces or 1
-
-
-def _qos(arg: Any) -> tuple[tuple[str, Any], ...] | None:
-    """A QoS argument known statically: a plain depth ``10`` or ``rclcpp::QoS(10)`` (keep-last depth)."""
-    if arg.type == "call_expression" and last_name(text(arg.child_by_field_name("function"))) in ("QoS", "KeepLast"):
-        inner = call_args(arg)
-        return _qos(inner[0]) if len(inner) == 1 else None
-    if arg.type == "number_literal" and text(arg).isdigit():
-        return (("depth", int(text(arg))),)
-    return None

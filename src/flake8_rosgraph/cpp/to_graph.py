@@ -29,7 +29,9 @@ from typing import Any, Iterable
 from ..graph import names
 from ..graph.builder import _entity_order, _node_problem, _param_problem, resolve_name
 from ..graph.model import Diagnostic, Entity, Location, RosNode
-from .extract import NODE_BASES, FileFacts, NodeDecl, Owner, read_file
+from .calls import NODE_BASES
+from .extract import read_file
+from .facts import FileFacts, NodeDecl, Owner
 from .sources import CppSource, cpp_sources, included_names, mentions_rclcpp
 from .syntax import load_parser
 
