@@ -33,6 +33,12 @@ EXTRA_FILES: dict[str, bytes] = {
     "src/extra/deep.py": ("import rclpy\nx = " + " + ".join(["'a'"] * 900) + "\n").encode(),
     "src/extra/duplicate/talker.py": b"import rclpy\nrclpy.create_node('talker_twin')\n",
     "stubs/broken.toml": b'[functions."x.y"]\nparams = 5\n',
+    "src/extra_cpp/package.xml": b"<package format=\"3\"><name>extra_cpp</name></package>\n",
+    "src/extra_cpp/src/relay.cpp": b'#include "rclcpp/rclcpp.hpp"\nclass Relay : public rclcpp::Node {\n'
+                                   b'public:\n  Relay() : Node("relay") {\n'
+                                   b'    create_publisher<std_msgs::msg::String>("chatter_relay", 10);\n'
+                                   b'    create_subscription<std_msgs::msg::String>(declare_parameter("in", "chatter"), 10, cb);\n'
+                                   b'  }\n  void broken(\n};\n',
 }
 
 #: Runs the tool with os.scandir / os.listdir answering in a seeded random order.

@@ -57,6 +57,19 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
         return []
 
 
+def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic]) -> None:
+    """Add the workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
+    from .cpp.to_graph import cpp_graph
+    try:
+        nodes, cpp_diagnostics = cpp_graph(root)
+    except Exception as exc:
+        diagnostics.append(Diagnostic("", 0, f"C++ sources not read: internal error: "
+                                              f"{type(exc).__name__}: {exc}", "error"))
+        return
+    diagnostics.extend(cpp_diagnostics)
+    graph.nodes = sorted(graph.nodes + nodes, key=lambda n: (n.fqn or "", n.location, n.language))
+
+
 def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
                 analysis: Analysis, diagnostics: list[Diagnostic]) -> None:
     """Message facts and interface definitions for the message rules; a failure here must not
@@ -75,7 +88,7 @@ def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
 
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
                 interface_dirs: Sequence[Path] = ()) -> RosGraph:
-    """The ROS computation graph of the Python code under ``root``; never raises.
+    """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``)."""
     root = Path(root)
@@ -92,6 +105,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = (),
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
+        _cpp_nodes(root, graph, diagnostics)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
         _interfaces(root, interface_dirs, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback

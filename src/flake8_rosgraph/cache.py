@@ -10,9 +10,9 @@ later run on unchanged code) reads that file.
   sources and built-in stubs), the extra stub files' contents, the options that
   change findings (external topics) and the path and content hash of every
   workspace file the analysis may read (``.py`` plus ROS metadata: package.xml,
-  setup.cfg, CMakeLists.txt, launch/parameter files, ``COLCON_IGNORE`` markers),
-  read with the readers' own rules (:mod:`.safe_io`). Any change gives a new key,
-  so a stale entry is never read; old entries are pruned.
+  setup.cfg, CMakeLists.txt, launch/parameter files, C++ sources and headers,
+  ``COLCON_IGNORE`` markers), read with the readers' own rules (:mod:`.safe_io`).
+  Any change gives a new key, so a stale entry is never read; old entries are pruned.
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
@@ -43,6 +43,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from . import __version__
+from .cpp import CPP_SUFFIXES
 from .escaping import escape_text
 from .graph.model import Diagnostic, Location
 from .options import Settings
@@ -65,9 +66,9 @@ _OWN_FILE = re.compile(r"^(?:[0-9a-f]{64}\.(?:json|lock)|\.tmp-[A-Za-z0-9_]+\.js
 OWNER_MARKER = "CACHEDIR.TAG"
 _OWNER_TEXT = "Signature: 8a477f597d28d172789f06886806bc55\n# flake8-rosgraph analysis cache\n"
 _MARKERS = {".gitignore": "# created by flake8-rosgraph\n*\n", "COLCON_IGNORE": "", OWNER_MARKER: _OWNER_TEXT}
-#: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files).
+#: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files, C++ partner ends).
 _INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch",
-                             ".msg", ".srv", ".action"})
+                             ".msg", ".srv", ".action"}) | CPP_SUFFIXES
 #: Files read (or whose presence matters) whatever their suffix.
 _INPUT_NAMES = frozenset({"CMakeLists.txt", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 

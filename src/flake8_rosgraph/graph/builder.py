@@ -269,17 +269,7 @@ class GraphBuilder:
         return out
 
     def _resolve(self, raw: str | None, node: RosNode) -> tuple[str | None, str | None]:
-        if raw is None:
-            return None, None
-        if node.name is None or node.namespace is None:
-            if raw.startswith("/"):
-                check = names.validate_full_topic_name(raw)
-                return raw, None if check.ok else check.reason
-            return None, None
-        expanded, check = names.expand_topic_name(raw, node.name, node.namespace)
-        if expanded is None:
-            return raw, check.reason
-        return expanded, None if check.ok else check.reason
+        return resolve_name(raw, node)
 
     def callback_name(self, value: Value) -> str | None:
         found = []
@@ -289,6 +279,24 @@ class GraphBuilder:
             elif isinstance(atom, ExternBound):
                 found.append(".".join(atom.qualname.split(".")[-2:]))
         return sorted(found)[0] if found else None
+
+
+def resolve_name(raw: str | None, node: RosNode) -> tuple[str | None, str | None]:
+    """A written topic/service/action name expanded on ``node`` per rcl, and why it is invalid (if so).
+
+    Unknown (``None``) when the name is, or when it is relative and the node's name or namespace is.
+    """
+    if raw is None:
+        return None, None
+    if node.name is None or node.namespace is None:
+        if raw.startswith("/"):
+            check = names.validate_full_topic_name(raw)
+            return raw, None if check.ok else check.reason
+        return None, None
+    expanded, check = names.expand_topic_name(raw, node.name, node.namespace)
+    if expanded is None:
+        return raw, check.reason
+    return expanded, None if check.ok else check.reason
 
 
 def _class_name(program, obj: Obj) -> str | None:

@@ -1,7 +1,7 @@
 """The graph as JSON, per the public contract ``rosgraph/1`` (docs: graph-json.md).
 
 Key order and list order are fixed, so the same graph always serialises to the
-same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``diagnostics``)
+same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``language``, ``diagnostics``)
 are additions the contract allows; consumers ignore what they do not know.
 """
 from __future__ import annotations
@@ -53,6 +53,8 @@ def _node(n: RosNode) -> dict[str, Any]:
         out["conditional"] = True
     if n.invalid:
         out["invalid"] = n.invalid
+    if n.language != "python":
+        out["language"] = n.language
     return out
 
 

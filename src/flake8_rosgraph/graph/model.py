@@ -74,6 +74,9 @@ class RosNode:
     #: Where a launch file starts this node ({"file", "line", "package", "executable", …});
     #: ``None`` for the node as written in code.
     launch: dict[str, Any] | None = None
+    #: The language of the code that creates it: ``"python"`` (rclpy, analysed) or ``"cpp"``
+    #: (rclcpp, read by :mod:`flake8_rosgraph.cpp` as a partner end for the Python rules).
+    language: str = "python"
 
     @property
     def fqn(self) -> str | None:

@@ -106,7 +106,7 @@ class Instantiator:
             entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid))
         node = RosNode(name, namespace, code.location, code.cls,
                        conditional=code.conditional or launched.conditional,
-                       invalid=code.invalid, entities=entities)
+                       invalid=code.invalid, entities=entities, language=code.language)
         node.launch = launch_info(launched)
         return Instance(launched, node, code, frozenset(hits), self.settings(launched, node), known,
                         tuple(sorted(expanded)))

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Iterable
 
+from ..cpp.reporting import at_python_ends
 from ..graph.model import RosGraph
 from .base import Finding, Rule, RuleConfig
 from .ros001_publisher_without_subscriber import PublisherWithoutSubscriber
@@ -66,11 +67,14 @@ def selected_rules(select: Iterable[str] | None = None) -> tuple[Rule, ...]:
 
 
 def run_rules(graph: RosGraph, config: RuleConfig, select: Iterable[str] | None = None) -> list[Finding]:
-    """Run the selected rules over ``graph``: findings sorted by location, code and message, duplicates dropped."""
+    """Run the selected rules over ``graph``: findings sorted by location, code and message, duplicates dropped.
+
+    Findings are located at Python ends only (:mod:`flake8_rosgraph.cpp.reporting`).
+    """
     findings: set[Finding] = set()
     for rule in selected_rules(select):
         findings.update(rule.check(graph, config))
-    return sorted(findings)
+    return at_python_ends(findings)  # C++ ends are partners only
 
 
 __all__ = ["RULES", "Finding", "Rule", "RuleConfig", "rule_by_code", "run_rules", "selected_rules"]
