@@ -11,11 +11,11 @@ workspaces (vendored libraries, algorithms, tests) cheap.
 from __future__ import annotations
 
 import os
-import stat
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..graph.model import Diagnostic
+from ..safe_io import UnsafeFile, read_bytes
 from ..workspace import SKIP_DIRS, relative
 from . import CPP_SUFFIXES
 
@@ -58,18 +58,14 @@ def _package_files(root: Path) -> list[tuple[Path, str]]:
     return sorted(found, key=lambda item: item[0].as_posix())
 
 
-def _read(path: Path, rel: str) -> bytes | Diagnostic:
+def _read(path: Path, rel: str, root: Path) -> bytes | Diagnostic:
+    """The file's bytes through the workspace's one safe opener (regular files inside ``root``, bounded)."""
     try:
-        info = path.stat()
-        if not stat.S_ISREG(info.st_mode):
-            return Diagnostic(rel, 1, "C++ file skipped: not a regular file", "info")
-        with path.open("rb") as handle:
-            data = handle.read(MAX_CPP_FILE_BYTES + 1)
+        return read_bytes(path, root, MAX_CPP_FILE_BYTES)
+    except UnsafeFile as exc:
+        return Diagnostic(rel, 1, f"C++ file skipped: {str(exc).removeprefix('not read: ')}", "info")
     except OSError as exc:
         return Diagnostic(rel, 1, f"cannot read C++ file: {exc.strerror or exc}")
-    if len(data) > MAX_CPP_FILE_BYTES:
-        return Diagnostic(rel, 1, f"C++ file skipped: larger than {MAX_CPP_FILE_BYTES // 1024} KiB", "info")
-    return data
 
 
 def cpp_sources(root: Path) -> tuple[list[CppSource], list[Diagnostic]]:
@@ -81,7 +77,7 @@ def cpp_sources(root: Path) -> tuple[list[CppSource], list[Diagnostic]]:
     diagnostics: list[Diagnostic] = []
     for path, package in _package_files(root):
         rel = relative(path, root)
-        data = _read(path, rel)
+        data = _read(path, rel, root)
         if isinstance(data, Diagnostic):
             diagnostics.append(data)
         else:
