@@ -18,6 +18,7 @@ from .escaping import escape_text
 from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph
 from .safe_io import read_text
+from .options import Buffers
 from .workspace import load_workspace
 
 
@@ -87,16 +88,17 @@ def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
 
 
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
-                interface_dirs: Sequence[Path] = ()) -> RosGraph:
+                interface_dirs: Sequence[Path] = (), buffers: Buffers = ()) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
-    ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``)."""
+    ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
+    ``buffers``: unsaved editor content that replaces files on disk."""
     root = Path(root)
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
         diagnostics.extend(stub_diags)
-        workspace = load_workspace(root)
+        workspace = load_workspace(root, buffers)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
         analysis = Analysis(program, library)

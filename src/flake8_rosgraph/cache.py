@@ -46,7 +46,7 @@ from . import __version__
 from .cpp import CPP_SUFFIXES
 from .escaping import escape_text
 from .graph.model import Diagnostic, Location
-from .options import Settings
+from .options import Buffers, Settings
 from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
 from .findings import Finding, RuleConfig
 
@@ -430,14 +430,14 @@ else:
 
 # -- the analysis ----------------------------------------------------------------------------
 
-def build_report(root: Path, settings: Settings) -> WorkspaceReport:
+def build_report(root: Path, settings: Settings, buffers: Buffers = ()) -> WorkspaceReport:
     """Analyse ``root`` and run every rule, uncached (imports the heavy parts only when needed)."""
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
     from .launch.api import judged_graph
 
-    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs)
+    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
@@ -485,14 +485,19 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
 
 
 #: Per-process results, so that the many files of one run share one lookup.
-_MEMO: dict[tuple[Path, Settings], WorkspaceReport] = {}
+_MEMO: dict[tuple[Path, Settings, Buffers], WorkspaceReport] = {}
 
 
-def workspace_report(root: Path, settings: Settings) -> WorkspaceReport:
-    """:func:`load_or_build`, memoised for the life of the current run (see :func:`start_run`)."""
-    memo_key = (Path(os.path.abspath(root)), settings)
+def workspace_report(root: Path, settings: Settings, buffers: Buffers = ()) -> WorkspaceReport:
+    """:func:`load_or_build`, memoised for the life of the current run (see :func:`start_run`).
+
+    With ``buffers`` (an editor's unsaved content) the analysis is never cached on
+    disk: a buffer changes with every keystroke and is nobody else's business.
+    """
+    memo_key = (Path(os.path.abspath(root)), settings, buffers)
     if memo_key not in _MEMO:
-        _MEMO[memo_key] = load_or_build(memo_key[0], settings)
+        _MEMO[memo_key] = (build_report(memo_key[0], settings, buffers) if buffers
+                           else load_or_build(memo_key[0], settings))
     return _MEMO[memo_key]
 
 

@@ -41,6 +41,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
+#: Unsaved editor buffers: absolute file path → the buffer's bytes, analysed instead of the file on disk.
+Buffers = tuple[tuple[str, bytes], ...]
 #: The code reported instead of a crash (flake8 plugin and ``check`` command alike).
 INTERNAL_ERROR_CODE = "ROS000"
 #: Environment variables, by setting name.

@@ -52,6 +52,10 @@ class _Run:
     #: Why the options could not be used, reported as ROS000 on each checked file.
     error: str | None = None
     roots: dict[Path, Path] = field(default_factory=dict, compare=False)
+    #: flake8 reads the checked file from standard input (``flake8 -``): an editor's unsaved buffer.
+    stdin: bool = False
+    #: That buffer, once the checker has seen it (absolute path → bytes); the report stage reuses it.
+    buffers: dict[str, bytes] = field(default_factory=dict, compare=False)
 
 
 _RUN: _Run | None = None
@@ -115,7 +119,27 @@ def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, str] | None
     path = Path(os.path.abspath(filename))
     root = _root_for(run, path)
     relative = _relative(path, root)
-    return None if relative is None else (workspace_report(root, run.settings), relative)
+    buffers = tuple(sorted(run.buffers.items()))
+    return None if relative is None else (workspace_report(root, run.settings, buffers), relative)
+
+
+def _note_buffer(run: _Run, filename: str, lines: list[str]) -> None:
+    """Under ``flake8 -`` (editors: ``--stdin-display-name PATH``), analyse the buffer instead of the file.
+
+    The buffer replaces the file only when it differs from what is on disk, so a
+    saved file keeps using the shared cache.
+    """
+    if not run.stdin or not lines:
+        return
+    path = os.path.abspath(filename)
+    buffer = "".join(lines).encode("utf-8", errors="surrogateescape")
+    try:
+        with open(path, "rb") as handle:
+            unchanged = handle.read(len(buffer) + 1) == buffer
+    except OSError:
+        return  # no such file (plain "stdin"): nothing of the workspace to replace
+    if not unchanged:
+        run.buffers[path] = buffer
 
 
 def findings_in_file(run: _Run, filename: str) -> list[Finding]:
@@ -146,9 +170,11 @@ class RosGraphChecker:
     name = "flake8-rosgraph"
     version = __version__
 
-    def __init__(self, tree: ast.AST, filename: str) -> None:
-        # flake8 classifies plugins by their parameters: ``tree`` makes this an AST plugin.
+    def __init__(self, tree: ast.AST, filename: str, lines: list[str]) -> None:
+        # flake8 classifies plugins by their parameters: ``tree`` makes this an AST plugin;
+        # ``lines`` is the text flake8 checks (the editor's buffer under ``flake8 -``).
         self.filename = filename
+        self.lines = lines
 
     @classmethod
     def add_options(cls, parser: Any) -> None:
@@ -168,7 +194,8 @@ class RosGraphChecker:
         try:
             from .rules import RULES
 
-            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES))
+            stdin = list(getattr(options, "filenames", None) or []) == ["-"]
+            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES), stdin=stdin)
         except Exception as exc:
             if settings.debug:
                 raise
@@ -184,6 +211,7 @@ class RosGraphChecker:
         try:
             if run.error is not None:
                 raise RuntimeError(run.error)
+            _note_buffer(run, self.filename, self.lines)
             findings = findings_in_file(run, self.filename)
             errors = analysis_errors(run, self.filename)
         except Exception as exc:

@@ -19,6 +19,7 @@ from pathlib import Path
 
 from .absint.program import Module
 from .graph.model import Diagnostic
+from .options import Buffers
 from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
 
 #: On Python 3.10, a line with more call/attribute/subscript links than this is not parsed
@@ -78,10 +79,11 @@ def _chain_links(line: str) -> int:
     return line.count("(") + line.count(".") + line.count("[")
 
 
-def read_module(path: Path, root: Path) -> Module | Diagnostic:
+def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module | Diagnostic:
+    """The module of ``path`` (``buffer``: the editor's unsaved content, parsed instead of the file)."""
     rel = relative(path, root)
     try:
-        data = read_bytes(path, root, MAX_FILE_BYTES)
+        data = buffer if buffer is not None and len(buffer) <= MAX_FILE_BYTES else read_bytes(path, root, MAX_FILE_BYTES)
     except UnsafeFile as exc:
         return Diagnostic(rel, 1, f"skipped: {exc}".replace("skipped: not read: ", "skipped: "))
     except OSError as exc:
@@ -109,13 +111,17 @@ def read_module(path: Path, root: Path) -> Module | Diagnostic:
     return Module(name, rel, tree, wide, is_package)
 
 
-def load_workspace(root: Path) -> Workspace:
-    """Read every Python file under ``root``; unique module names (duplicates get a path-based one)."""
+def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
+    """Read every Python file under ``root``; unique module names (duplicates get a path-based one).
+
+    ``buffers`` replace the content of the files they name (an editor's unsaved buffer).
+    """
     modules: list[Module] = []
     diagnostics: list[Diagnostic] = []
     names: set[str] = set()
+    unsaved = dict(buffers)
     for path in python_files(root):
-        result = read_module(path, root)
+        result = read_module(path, root, unsaved.get(os.path.abspath(path)))
         if isinstance(result, Diagnostic):
             diagnostics.append(result)
             continue

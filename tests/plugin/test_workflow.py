@@ -147,3 +147,25 @@ def test_rules_and_explain_commands(tmp_path: Path) -> None:
     assert "### Why is this bad?" in doc.stdout and "### Use instead" in doc.stdout
     unknown = tool("explain", "ROS999", cwd=tmp_path)
     assert unknown.returncode == 2 and "ROS999" in unknown.stderr
+
+
+def test_an_editor_buffer_is_analysed_instead_of_the_file_on_disk(ws: Path) -> None:
+    """Editors (VS Code's flake8, pylsp) send the unsaved buffer on stdin with --stdin-display-name."""
+    path = ws / PRODUCERS
+    saved = path.read_text()
+    # the user fixes the unsubscribed /topic5 publisher and, two lines higher, adds a typo'd one
+    buffer = saved.replace("'topic5'", "'topic4'")
+    anchor = buffer.splitlines(keepends=True)
+    insert_at = next(i for i, line in enumerate(anchor) if "'topic4'" in line)
+    typo = anchor[insert_at].replace("'topic4'", "'topic44'")
+    buffer = "".join(anchor[:insert_at] + ["\n", typo] + anchor[insert_at:])
+    result = subprocess.run([sys.executable, "-m", "flake8", "--select", "ROS", "--stdin-display-name", PRODUCERS,
+                             "-"], cwd=ws, input=buffer, capture_output=True, text=True, timeout=300,
+                            env=clean_env())
+    found = rows(result)
+    typo_line = insert_at + 2
+    assert (PRODUCERS, typo_line, 9, "ROS001") in found, result.stdout + result.stderr
+    assert not any("topic5" in line for line in result.stdout.splitlines())
+    assert path.read_text() == saved  # nothing written
+    # the saved file is still judged as saved, and shares the cache as before
+    assert (PRODUCERS, 49, 9, "ROS001") in rows(flake8(PRODUCERS, cwd=ws))
