@@ -33,6 +33,7 @@ import json
 import os
 import re
 import secrets
+import shutil
 import stat
 import sys
 import tempfile
@@ -285,13 +286,7 @@ def _own_dir(cache_dir: Path) -> bool:
     try:
         info = os.lstat(cache_dir)
     except FileNotFoundError:
-        try:
-            cache_dir.parent.mkdir(parents=True, exist_ok=True)
-            cache_dir.mkdir()
-        except FileExistsError:
-            pass
-        except OSError:
-            return False
+        _create_marked(cache_dir)
         try:
             info = os.lstat(cache_dir)
         except OSError:
@@ -317,6 +312,26 @@ def _own_dir(cache_dir: Path) -> bool:
     except OSError:
         return False
     return True
+
+
+def _create_marked(cache_dir: Path) -> None:
+    """Create ``cache_dir`` with its markers in one step, so no other process sees it half made.
+
+    flake8's workers start together: the folder is assembled under a hidden
+    temporary name and renamed into place; whoever loses the race drops its copy
+    and adopts the winner's.
+    """
+    try:
+        cache_dir.parent.mkdir(parents=True, exist_ok=True)
+        staging = Path(tempfile.mkdtemp(prefix=".rosgraph-cache-new-", dir=cache_dir.parent))
+    except OSError:
+        return
+    try:
+        for name, content in _MARKERS.items():
+            _create_new(staging / name, content.encode())
+        os.rename(staging, cache_dir)
+    except OSError:
+        shutil.rmtree(staging, ignore_errors=True)
 
 
 def _create_new(path: Path, content: bytes) -> None:
