@@ -76,18 +76,13 @@ class AbsenceRule(Rule):
             return
         dangling = self._whole_sites_only(dangling, index)
         peer_kind = PEER_KIND[self.kind]
-        dangling_peers = {
-            name: index.using(peer_kind, name) for name in index.names(peer_kind)
-            if name not in exempt and not index.using(self.kind, name)
-        }
-        near_misses = NearMissFinder(dangling_peers)
+        near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
         for endpoint in dangling:
-            name = endpoint.entity.name
             interface = (id(endpoint.node) not in wired
-                         or index.node_counts[(self.kind, name)] > 1
-                         or namespace_of(name) in one_way)
+                         or index.same_role_nodes(endpoint) > 1
+                         or namespace_of(endpoint.entity.name) in one_way)
             yield from self._report(endpoint, near_misses, interface)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
