@@ -2,7 +2,8 @@
 
 It reports what the flake8 plugin reports for the same files: the findings of
 each PATH's workspace (found as in :mod:`.root`, or ``--root``) located in the
-files under PATH, with ``# noqa`` comments honoured as flake8 honours them and
+files under PATH (and, for a broken connection whose own end is outside every
+PATH, a copy at its other end under PATH: :mod:`.partial_runs`), with ``# noqa`` comments honoured as flake8 honours them and
 the off-by-default rules opted in the same way (``--select ROS010``). The same
 environment variables apply (``ROSGRAPH_ROOT``, ``ROSGRAPH_STUBS``, …); command
 line flags win over them. It shares the workspace cache with the plugin.
@@ -25,6 +26,7 @@ from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings
 from .root import discover_root, find_vcs_root
 from .findings import Finding
+from .partial_runs import shown_findings
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 CHECK_CATEGORY = "flake8-rosgraph/check"
@@ -122,14 +124,21 @@ def _collect(settings: Settings, paths: list[Path], wanted: _Selection
              ) -> tuple[list[tuple[Path, Finding]], list[tuple[Path, Diagnostic]]]:
     findings: set[tuple[Path, Finding]] = set()
     diagnostics: set[tuple[Path, Diagnostic]] = set()
+    targets_by_root: dict[Path, list[Path]] = {}
     for target in (Path(os.path.abspath(p)) for p in paths):
         root = Path(os.path.abspath(settings.root)) if settings.root else discover_root(target)
+        targets_by_root.setdefault(root, []).append(target)
+    for root, targets in sorted(targets_by_root.items()):
         report = workspace_report(root, settings)
         diagnostics.update((root, d) for d in report.diagnostics)
+
+        def checked(path: str, root: Path = root, targets: list[Path] = targets) -> bool:
+            return any(_is_under(root / path, target) for target in targets)
+
         noqa: dict[Path, dict[int, str]] = {}
-        for finding in report.findings:
+        for finding in shown_findings(report.findings, checked):
             path = root / finding.location.path
-            if not (_is_under(path, target) and wanted(finding.code)):
+            if not wanted(finding.code):
                 continue
             if path not in noqa:
                 noqa[path] = _noqa_lines(path)
