@@ -32,7 +32,7 @@ def _is_test_module(basename: str) -> bool:
     return stem.startswith("test_") or stem.endswith("_test") or stem == "conftest"
 
 
-def test_scope(path: str) -> str | None:
+def fixture_scope(path: str) -> str | None:
     """The scope prefix of a test file (``"pkg/"``, ``""`` at the root), or ``None`` for production code."""
     parts = PurePosixPath(path).parts
     for i, part in enumerate(parts[:-1]):
@@ -45,9 +45,9 @@ def test_scope(path: str) -> str | None:
 
 def node_scope(node: RosNode) -> str | None:
     """The node's fixture scope, ``None`` for a production node (see the module docstring)."""
-    scope = test_scope(node.location.path)
+    scope = fixture_scope(node.location.path)
     if scope is None and node.launch is not None and isinstance(node.launch.get("file"), str):
-        scope = test_scope(node.launch["file"])
+        scope = fixture_scope(node.launch["file"])
     return scope
 
 

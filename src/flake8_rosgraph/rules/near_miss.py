@@ -46,7 +46,9 @@ LONG_TOKEN = 10
 DEEP_TOKEN = 24
 
 _NUMBER = re.compile(r"\d+")
-_PLURAL = (("ies", "y"), ("ses", "s"), ("xes", "x"), ("s", ""))
+_PLURAL = (("ies", "y"), ("sses", "ss"), ("xes", "x"), ("s", ""))
+#: Endings of singular words that look plural (``status``, ``axis``, ``pass``).
+_NOT_PLURAL = ("ss", "us", "is")
 
 #: Kinds of near miss, best first: a resolution slip is an exact fact, a misspelling a guess.
 RESOLUTION, FOLDED, NAMESPACE_TOKEN, SPELLING = range(4)
@@ -61,8 +63,10 @@ def _join(tokens: Sequence[str]) -> str:
 
 
 def _singular(word: str) -> str:
+    if word.endswith(_NOT_PLURAL):
+        return word
     for suffix, replacement in _PLURAL:
-        if word.endswith(suffix) and len(word) > len(suffix) + 2 and not word.endswith("ss"):
+        if word.endswith(suffix) and len(word) > len(suffix) + 1:
             return word[: -len(suffix)] + replacement
     return word
 
@@ -208,7 +212,7 @@ class NearMissFinder:
                 found[other] = min(found.get(other, rank), rank)
 
         for other in resolutions(endpoint):
-            add(other, (RESOLUTION, 0))
+            add(other, (RESOLUTION, abs(len(_tokens(other)) - len(tokens))))
         for other in self._folded.get(folded(name), ()):
             add(other, (FOLDED, 0))
         for other in self._one_token_more.get(name, ()):
