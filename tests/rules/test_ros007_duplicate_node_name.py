@@ -82,8 +82,8 @@ def test_nodes_started_by_one_launch_file_are_reported():
     a = node("driver", pub("/left/scan"), path="pkg_a/a.py")
     b = node("driver", pub("/right/scan"), path="pkg_b/b.py")
     g = graph(a, b)
-    g.systems = [System("bringup/robot.launch.py", instances=[launched("bringup/robot.launch.py", a),
-                                                             launched("bringup/robot.launch.py", b)])]
+    both = [launched("bringup/robot.launch.py", a), launched("bringup/robot.launch.py", b)]
+    g.systems = [System("bringup/robot.launch.py", instances=both)]
     assert messages(g, select=["ROS007"]) == [
         "ROS007 node '/driver' is also created at pkg_b/b.py:1, and they run together "
         "(both are started by bringup/robot.launch.py)",

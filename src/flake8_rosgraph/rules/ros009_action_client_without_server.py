@@ -9,6 +9,13 @@ class ActionClientWithoutServer(AbsenceRule):
     Checks for action clients whose action no node of the analysed workspace
     serves.
 
+    The end is compared with every action name served in the workspace,
+    connected or not, with a compatible type. A *near name* — a typo (swapped,
+    missing, doubled or changed characters, case, singular/plural of the last
+    word), the written name resolved as private (`~/x`), relative or absolute
+    in its node, or one namespace token more or less — is named in the
+    message ("did you mean ...?") with its location as related location.
+
     ## Why is this bad?
     `wait_for_server()` blocks forever and goals are never accepted. The cause
     is usually a misspelt action name or a server in another namespace.
@@ -18,11 +25,24 @@ class ActionClientWithoutServer(AbsenceRule):
     `move_action`, controllers' `follow_joint_trajectory`) look unserved;
     declare them as external names. The rule reports only an action client of
     a node whose other action clients reach servers of the workspace; it
-    stays quiet (unless a near-miss server exists) when none of them does,
+    stays quiet (unless a near name is served) when none of them does,
     when several nodes use the action, or when the workspace only uses
     actions of the action's namespace in this role. It also stays quiet when
     some action server's name could not be resolved and its type does not
     rule the match out.
+    Numbered families (`/robot1/odom` vs `/robot2/odom`, `/cmd` vs `/cmd2`)
+    are never near names, nor is one last name in two namespaces
+    (`/left/image`, `/right/image`); a token of at most five characters matches only a swap
+    of neighbours or one character more or less (`/left` and `/lift` are two
+    words), longer ones one edit, from ten characters two. Test fixtures
+    (nodes in `test/` or `tests/` folders, `test_*.py` modules, nodes started
+    by launch files there) form their own system: they connect with the
+    fixtures and the production nodes of the package they test only, so a
+    test's end never makes a production end look connected. Ends created by
+    a shared helper function sit at the helper's creation call, where several
+    count as alternatives of one site. When flake8 checks only some files
+    (pre-commit), a near-name finding whose end is not checked is shown at
+    the checked near end.
 
     ## Example
     ```python
