@@ -65,7 +65,10 @@ def test_eval_case(case: Path):
         settings = tomllib.loads((case / CONFIG_FILE).read_text(encoding="utf-8"))
     config = RuleConfig(external_names=frozenset(settings.get("external_names", ())))
     graph = build_graph(case)
-    findings = run_rules(graph, config, settings.get("select"))
+    from flake8_rosgraph.launch.api import judged_graph
+
+    # judged as launched, as flake8 and ``check`` judge it (cache.build_report)
+    findings = run_rules(judged_graph(graph, graph.systems), config, settings.get("select"))
     actual = sorted({(f.code, f.location.path, f.location.line) for f in findings})
     details = "\n".join(f"  {f.code} {f.location.short()} {f.message}" for f in findings)
     diagnostics = "\n".join(f"  {d.path}:{d.line} {d.message}" for d in graph.diagnostics)

@@ -17,8 +17,11 @@ class DuplicateNodeName(Rule):
     qualified node name and run together: both started by one launch file
     (with what it includes), both created in one source file (one process),
     or talking to each other (one publishes a topic the other subscribes,
-    serves a service or action the other calls). The finding is reported at
-    both creation sites, each with the other as related location.
+    serves a service or action the other calls; nodes of two different
+    launch files are two programs, whatever they talk to). The finding is reported at
+    both sites, each with the other as related location: the creation site
+    in code, or the launch action when a launch file sets the node's name
+    (so one executable launched twice under one name is reported too).
 
     ## Why is this bad?
     ROS 2 does not enforce unique node names: both nodes start, but tools
@@ -35,9 +38,8 @@ class DuplicateNodeName(Rule):
     other or one launch test starts them. Two classes in two modules that one
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
-    creation site (`Node('a' if x else 'b')`), nodes created by one call
-    inside a loop, and one executable launched twice under one name (one
-    code site) are not reported.
+    creation site (`Node('a' if x else 'b')`) and nodes created by one call
+    inside a loop are one site and are not reported.
 
     ## Example
     ```python
@@ -79,9 +81,10 @@ class DuplicateNodeName(Rule):
         # site -> partner site -> why they run together (the first reason found, in a fixed order)
         partners: dict[Location, dict[Location, str]] = defaultdict(dict)
         for reason, a, b in together.pairs(nodes):
-            if a.location != b.location:
-                partners[a.location].setdefault(b.location, reason)
-                partners[b.location].setdefault(a.location, reason)
+            site_a, site_b = together.site(a), together.site(b)
+            if site_a != site_b:
+                partners[site_a].setdefault(site_b, reason)
+                partners[site_b].setdefault(site_a, reason)
         for site in sorted(partners):
             others = sorted(partners[site])
             first = others[0]
@@ -96,11 +99,20 @@ class _Together:
     def __init__(self, graph: RosGraph, duplicated: list[str]) -> None:
         wanted = set(duplicated)
         self._systems: dict[int, list[str]] = defaultdict(list)
+        self._named_at: dict[int, Location] = {}
         for system in graph.systems:
             for instance in system.instances:
                 if instance.node.fqn in wanted:
                     self._systems[id(instance.node)].append(system.launch_file)
+                    launched = instance.launched
+                    if launched.name is not None:
+                        self._named_at[id(instance.node)] = Location(
+                            launched.launch_file, launched.location.line, launched.location.column)
         self._index = EndpointIndex.build(graph) if wanted else None
+
+    def site(self, node: RosNode) -> Location:
+        """Where to fix the name: the launch action that names the node, else the node's creation site."""
+        return self._named_at.get(id(node), node.location)
 
     def pairs(self, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
         """``(why, a, b)`` for nodes of ``nodes`` that run together, launch first, then file, then wiring.
@@ -132,7 +144,9 @@ class _Together:
                 if entity.name is None or entity.kind not in PEER_KIND:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
-                    if id(peer.node) in members and peer.node is not node:
+                    # two launch files are two programs: their nodes run together only if one starts both
+                    both_launched = id(node) in self._systems and id(peer.node) in self._systems
+                    if id(peer.node) in members and peer.node is not node and not both_launched:
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
 
