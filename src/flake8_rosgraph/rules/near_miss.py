@@ -21,7 +21,7 @@ but never when they differ only in their numbers (``/topic5`` vs ``/topic8``,
 ``/robot1/odom`` vs ``/robot2/odom``, ``/cmd`` vs ``/cmd2``): numbered names
 are deliberate families.
 
-The index holds, per peer name, a bounded number of keys (its folded form,
+The index holds, per peer name, a bounded number of keys (its folded forms,
 its names with one token dropped, and per token its deletion variants, depth
 two only for tokens of at most :data:`DEEP_TOKEN` characters), so building it
 and looking a name up stay linear in the total length of the names.
@@ -38,15 +38,16 @@ from .topics import Endpoint, types_compatible
 
 #: Tokens of at most this many characters accept only a transposition or one character more or less.
 SHORT_TOKEN = 5
-#: ... and only when both keep at least this many characters (``/ab`` and ``/abc`` are just different).
-MIN_TOKEN = 3
+#: ... and only when both keep at least this many characters (``/a`` and ``/ab`` are just different).
+MIN_TOKEN = 2
 #: Tokens shorter than this accept one edit; longer ones two.
 LONG_TOKEN = 10
 #: Tokens longer than this are indexed with single deletions only (two-edit typos there go unseen).
 DEEP_TOKEN = 24
 
 _NUMBER = re.compile(r"\d+")
-_PLURAL = (("ies", "y"), ("sses", "ss"), ("xes", "x"), ("s", ""))
+#: Plural endings and what the singular may end with instead (``poses``: ``pose``; ``statuses``: ``status``).
+_PLURAL = (("ies", ("y",)), ("es", ("e", "")), ("s", ("",)))
 #: Endings of singular words that look plural (``status``, ``axis``, ``pass``).
 _NOT_PLURAL = ("ss", "us", "is")
 
@@ -62,21 +63,21 @@ def _join(tokens: Sequence[str]) -> str:
     return "/" + "/".join(tokens)
 
 
-def _singular(word: str) -> str:
+def _singulars(word: str) -> set[str]:
+    """``word`` if it is no plural, else what its singular may be (``boxes``: ``boxe`` or ``box``)."""
     if word.endswith(_NOT_PLURAL):
-        return word
-    for suffix, replacement in _PLURAL:
+        return {word}
+    for suffix, replacements in _PLURAL:
         if word.endswith(suffix) and len(word) > len(suffix) + 1:
-            return word[: -len(suffix)] + replacement
-    return word
+            return {word[: -len(suffix)] + r for r in replacements}
+    return {word}
 
 
-def folded(name: str) -> str:
-    """``name`` in lower case with the last word of its last token in the singular."""
+def folded(name: str) -> set[str]:
+    """``name`` in lower case with the last word of its last token in the singular (each way it may be)."""
     head, _, last = name.lower().rpartition("/")
-    words = last.split("_")
-    words[-1] = _singular(words[-1])
-    return f"{head}/{'_'.join(words)}"
+    *words, word = last.split("_")
+    return {f"{head}/{'_'.join([*words, singular])}" for singular in _singulars(word)}
 
 
 def _without_one_token(tokens: Sequence[str]) -> Iterable[str]:
@@ -193,7 +194,8 @@ class NearMissFinder:
         self._spelling: dict[int, list[str]] = defaultdict(list)
         for name in sorted(peers):
             tokens = _tokens(name)
-            self._folded[folded(name)].append(name)
+            for key in folded(name):
+                self._folded[key].append(name)
             for shorter in _without_one_token(tokens):
                 self._one_token_more[shorter].append(name)
             for key in set(_spelling_keys(tokens)):
@@ -213,8 +215,9 @@ class NearMissFinder:
 
         for other in resolutions(endpoint):
             add(other, (RESOLUTION, abs(len(_tokens(other)) - len(tokens))))
-        for other in self._folded.get(folded(name), ()):
-            add(other, (FOLDED, 0))
+        for key in folded(name):
+            for other in self._folded.get(key, ()):
+                add(other, (FOLDED, 0))
         for other in self._one_token_more.get(name, ()):
             add(other, (NAMESPACE_TOKEN, 1))
         for shorter in _without_one_token(tokens):
