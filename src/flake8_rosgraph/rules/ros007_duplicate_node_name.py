@@ -17,8 +17,8 @@ class DuplicateNodeName(Rule):
     qualified node name and run together: both started by one launch file
     (with what it includes), both created in one source file (one process),
     or talking to each other (one publishes a topic the other subscribes,
-    serves a service or action the other calls; nodes of two different
-    launch files are two programs, whatever they talk to). The finding is reported at
+    serves a service or action the other calls: a system split over several
+    launch files still runs as one). The finding is reported at
     both sites, each with the other as related location: the creation site
     in code, or the launch action when a launch file sets the node's name
     (so one executable launched twice under one name is reported too).
@@ -144,9 +144,7 @@ class _Together:
                 if entity.name is None or entity.kind not in PEER_KIND:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
-                    # two launch files are two programs: their nodes run together only if one starts both
-                    both_launched = id(node) in self._systems and id(peer.node) in self._systems
-                    if id(peer.node) in members and peer.node is not node and not both_launched:
+                    if id(peer.node) in members and peer.node is not node:
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
 

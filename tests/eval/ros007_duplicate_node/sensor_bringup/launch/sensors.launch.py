@@ -5,6 +5,6 @@ from launch_ros.actions import Node
 
 def generate_launch_description():
     return LaunchDescription([
-        Node(package='lidar_tools', executable='scan_logger', name='scan_pipeline'),  # ROS007
-        Node(package='lidar_tools', executable='filter_median', name='scan_pipeline'),  # ROS007
+        Node(package='lidar_tools', executable='scan_logger', name='lidar_pipeline'),  # ROS007
+        Node(package='lidar_tools', executable='filter_median', name='lidar_pipeline'),  # ROS007
     ])

@@ -1,4 +1,4 @@
-"""Starts one filter under the shared pipeline name: alone, it is no duplicate."""
+"""Starts the voxel filter under the pipeline's filter name."""
 from launch import LaunchDescription
 from launch_ros.actions import Node
 
