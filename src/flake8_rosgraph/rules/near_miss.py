@@ -51,8 +51,8 @@ _PLURAL = (("ies", ("y",)), ("es", ("e", "")), ("s", ("",)))
 #: Endings of singular words that look plural (``status``, ``axis``, ``pass``).
 _NOT_PLURAL = ("ss", "us", "is")
 
-#: Kinds of near miss, best first: a resolution slip is an exact fact, a misspelling a guess.
-RESOLUTION, FOLDED, NAMESPACE_TOKEN, SPELLING = range(4)
+#: Kinds of near miss, best first: a resolution slip is an exact fact; a typo beats a leaf shared across namespaces.
+RESOLUTION, FOLDED, SPELLING, NAMESPACE_TOKEN = range(4)
 
 
 def _tokens(name: str) -> list[str]:
