@@ -64,6 +64,8 @@ class EndpointIndex:
     unresolved_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
     #: The same, of production nodes only: a fixture's unknown cannot fill a production gap.
     unresolved_production_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
+    #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
+    _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, graph: RosGraph) -> EndpointIndex:
@@ -128,8 +130,11 @@ class EndpointIndex:
 
         Nodes of one fully qualified name count once (see :func:`_node_key`).
         """
-        users = self.using(endpoint.entity.kind, endpoint.entity.name or "")
-        return len({_node_key(ep.node) for ep in users if ep is endpoint or endpoint.sees(ep)})
+        key = (endpoint.entity.kind, endpoint.entity.name or "", endpoint.scope)
+        if key not in self._role_counts:
+            users = self.using(key[0], key[1])
+            self._role_counts[key] = len({_node_key(ep.node) for ep in users if endpoint.sees(ep)})
+        return self._role_counts[key]
 
     def unresolved_peer_may_match(self, endpoint: Endpoint) -> bool:
         """Whether an unresolved-name peer exists whose type does not rule out being ``endpoint``'s other end."""
