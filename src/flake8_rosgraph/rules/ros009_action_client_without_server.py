@@ -30,19 +30,9 @@ class ActionClientWithoutServer(AbsenceRule):
     actions of the action's namespace in this role. It also stays quiet when
     some action server's name could not be resolved and its type does not
     rule the match out.
-    Numbered families (`/robot1/odom` vs `/robot2/odom`, `/cmd` vs `/cmd2`)
-    are never near names, nor is one last name in two namespaces
-    (`/left/image`, `/right/image`); a token of at most five characters matches only a swap
-    of neighbours or one character more or less (`/left` and `/lift` are two
-    words), longer ones one edit, from ten characters two. Test fixtures
-    (nodes in `test/` or `tests/` folders, `test_*.py` modules, nodes started
-    by launch files there) form their own system: they connect with the
-    fixtures and the production nodes of the package they test only, so a
-    test's end never makes a production end look connected. Ends created by
-    a shared helper function sit at the helper's creation call, where several
-    count as alternatives of one site. When flake8 checks only some files
-    (pre-commit), a near-name finding whose end is not checked is shown at
-    the checked near end.
+    Which names count as near, how test fixtures are kept apart from
+    production nodes, and how a changed-files run shows a near-name finding
+    are as for ROS001 (see its Known problems).
 
     ## Example
     ```python
