@@ -108,7 +108,7 @@ def _depth(token: str) -> int:
 def _spelling_keys(tokens: Sequence[str]) -> Iterable[int]:
     """Hashed (token position, the other tokens, deletion variant of the token) keys of a name."""
     for i, token in enumerate(tokens):
-        context = (i, len(tokens), tuple(tokens[:i]), tuple(tokens[i + 1:]))
+        context = hash((i, len(tokens), tuple(tokens[:i]), tuple(tokens[i + 1:])))
         for variant in _deletions(token, _depth(token)):
             yield hash((context, variant))
 
