@@ -38,19 +38,23 @@ def shown_findings(findings: Iterable[Finding], checked: Callable[[str], bool]) 
     """The findings located in checked files, plus a mirror of each broken connection whose end is unchecked.
 
     ``checked`` takes a root-relative path. A mirror is placed at the first
-    related location of each checked file (one per file), so a full run,
-    where every file is checked, shows exactly ``findings``.
+    related location of each checked file (one per file), unless a finding
+    shown there already names the unchecked end (both ends of a near miss
+    dangle: each is reported, pointing at the other). A full run, where
+    every file is checked, shows exactly ``findings``.
     """
-    shown: list[Finding] = []
+    findings = list(findings)
+    shown = [f for f in findings if checked(f.location.path)]
+    told = {(f.location, other) for f in shown for other, _ in f.related}
     for finding in findings:
-        if checked(finding.location.path):
-            shown.append(finding)
-        elif finding.code in CONNECTION_CODES:
-            files: set[str] = set()
-            for other in finding.related:
-                if other[0].path not in files and checked(other[0].path):
-                    files.add(other[0].path)
-                    shown.append(mirrored(finding, other))
+        if finding.code not in CONNECTION_CODES or checked(finding.location.path):
+            continue
+        files: set[str] = set()
+        for other in finding.related:
+            location = other[0]
+            if location.path not in files and checked(location.path) and (location, finding.location) not in told:
+                files.add(location.path)
+                shown.append(mirrored(finding, other))
     return shown
 
 

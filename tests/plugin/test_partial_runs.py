@@ -123,6 +123,13 @@ def test_shown_findings_mirror_only_broken_connections_once_per_file() -> None:
     assert shown_findings(findings, lambda path: True) == findings
 
 
+def test_no_mirror_where_the_other_end_already_reports_the_pair() -> None:
+    # a near miss whose both ends dangle: each end is reported, pointing at the other
+    ros001 = Finding(Location("a.py", 3, 5), "ROS001", "m", ((Location("b.py", 7, 1), "subscription"),))
+    ros003 = Finding(Location("b.py", 7, 1), "ROS003", "m", ((Location("a.py", 3, 5), "publisher"),))
+    assert shown_findings([ros001, ros003], lambda path: path == "a.py") == [ros001]
+
+
 def test_checked_files_follow_flake8s_expansion(tmp_path: Path) -> None:
     options = Namespace(filenames=[str(tmp_path / "pkg"), str(tmp_path / "one.py")], exclude=["build", "*_pb2.py"],
                         extend_exclude=[], filename=["*.py"])
