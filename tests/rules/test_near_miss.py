@@ -107,6 +107,13 @@ def test_a_node_is_never_its_own_near_miss():
     assert all("did you mean" not in m for m in messages(g))
 
 
+def test_another_instance_of_the_same_code_node_is_not_its_near_miss():
+    # one relay started by two launch files: two instances of one creation site
+    first = node("relay", sub("/scan"), pub("/scans"), sub("/ack"), path="relay.py")
+    second = node("relay", sub("/scan"), pub("/scans"), sub("/ack"), path="relay.py")
+    assert all("did you mean" not in m for m in messages(graph(first, second, node("x", pub("/ack")))))
+
+
 def test_the_transposition_distance_is_the_optimal_string_alignment():
     def reference(a, b):
         d = [[i + j if i * j == 0 else 0 for j in range(len(b) + 1)] for i in range(len(a) + 1)]

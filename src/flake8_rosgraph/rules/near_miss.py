@@ -243,12 +243,13 @@ class NearMissFinder:
         """The best near miss for ``endpoint`` (surest kind, then closest, then alphabetical), if any.
 
         The partner must be able to run with the endpoint (:meth:`Endpoint.sees`),
-        sit on another node, and have a type that does not rule the match out.
+        sit on another node (not another instance of the same code node, as two
+        launch files make it), and have a type that does not rule the match out.
         """
         ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
         for _, other in ranked:
             for peer in self._peers[other]:
-                if (peer.node is not endpoint.node and endpoint.sees(peer)
+                if (peer.node.location != endpoint.node.location and endpoint.sees(peer)
                         and types_compatible(endpoint.entity.type, peer.entity.type)):
                     return NearMiss(other, peer)
         return None
