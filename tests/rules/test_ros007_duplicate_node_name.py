@@ -73,9 +73,36 @@ def test_test_nodes_that_talk_to_each_other_are_reported():
     assert codes(g) == ["ROS007", "ROS007"]
 
 
-def launched(system_file, code):
-    launched_node = LaunchedNode("pkg", "exe", Location(system_file, 5, 1), system_file)
+def launched(system_file, code, line=5, name=None):
+    launched_node = LaunchedNode("pkg", "exe", Location(system_file, line, 1), system_file, name=name)
     return Instance(launched_node, code, code)
+
+
+def instance_of(code, launch_file, line):
+    """The node as a launch action at ``launch_file:line`` starts it (the judged graph holds one per action)."""
+    started = node(code.name, *[], path=code.location.path, line=code.location.line)
+    started.entities = list(code.entities)
+    started.launch = {"file": launch_file, "line": line}
+    return started
+
+
+def test_one_executable_launched_twice_under_one_name_is_reported_at_both_actions():
+    code = node("scan_pipeline", pub("/scan_filtered"), path="lidar/lidar/filter.py")
+    first, second = instance_of(code, "bringup/sensors.launch.py", 8), instance_of(code, "bringup/sensors.launch.py", 9)
+    g = graph(first, second)
+    g.systems = [System("bringup/sensors.launch.py",
+                        instances=[launched("bringup/sensors.launch.py", first, 8, "scan_pipeline"),
+                                   launched("bringup/sensors.launch.py", second, 9, "scan_pipeline")])]
+    assert report(g) == ["ROS007 bringup/sensors.launch.py:8", "ROS007 bringup/sensors.launch.py:9"]
+
+
+def test_one_executable_named_alike_in_two_launch_files_is_quiet():
+    code = node("scan_pipeline", pub("/scan_filtered"), path="lidar/lidar/filter.py")
+    first, second = instance_of(code, "bringup/sim.launch.py", 8), instance_of(code, "bringup/real.launch.py", 8)
+    g = graph(first, second)
+    g.systems = [System(path, instances=[launched(path, started, 8, "scan_pipeline")])
+                 for path, started in (("bringup/sim.launch.py", first), ("bringup/real.launch.py", second))]
+    assert codes(g) == []
 
 
 def test_nodes_started_by_one_launch_file_are_reported():

@@ -72,8 +72,7 @@ class DuplicateNodeName(Rule):
         for node in graph.nodes:
             if node.fqn is not None:
                 groups[node.fqn].append(node)
-        together = _Together(graph, [fqn for fqn, nodes in groups.items()
-                                     if len({n.location for n in nodes}) > 1])
+        together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
         for fqn in sorted(groups):
             yield from self._duplicates(fqn, groups[fqn], together)
 
@@ -126,7 +125,9 @@ class _Together:
         for node in ordered:
             for launch_file in sorted(set(self._systems.get(id(node), ()))):
                 by_launch[launch_file].append(node)
-            if node_scope(node) is None:  # test functions are separate processes: no "one file" for tests
+            # A file is one process for code run as written; a launched node's process is its launch
+            # action, and test functions are separate processes.
+            if node.launch is None and node_scope(node) is None:
                 by_file[node.location.path].append(node)
         for launch_file, started in sorted(by_launch.items()):
             yield from _chained(f"both are started by {launch_file}", started)
