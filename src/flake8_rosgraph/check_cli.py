@@ -2,7 +2,8 @@
 
 It reports what the flake8 plugin reports for the same files: the findings of
 each PATH's workspace (found as in :mod:`.root`, or ``--root``) located in the
-files under PATH, with ``# noqa`` comments honoured as flake8 honours them and
+files under PATH (and, for a broken connection whose own end is outside every
+PATH, a copy at its other end under PATH: :mod:`.partial_runs`), with ``# noqa`` comments honoured as flake8 honours them and
 the off-by-default rules opted in the same way (``--select ROS010``). The same
 environment variables apply (``ROSGRAPH_ROOT``, ``ROSGRAPH_STUBS``, …); command
 line flags win over them. It shares the workspace cache with the plugin.
@@ -35,6 +36,7 @@ from .fingerprints import Ranks, SourceLines, finding_fingerprint, without_line_
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, root_problem
 from .root import discover_root, find_vcs_root
+from .partial_runs import shown_findings
 from .safe_io import MAX_SOURCE_BYTES, read_text
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
@@ -207,15 +209,22 @@ def _collect(settings: Settings, paths: list[Path], wanted: _Selection, config: 
              ) -> tuple[list[tuple[Path, Finding]], list[tuple[Path, Diagnostic]]]:
     findings: set[tuple[Path, Finding]] = set()
     diagnostics: set[tuple[Path, Diagnostic]] = set()
+    targets_by_root: dict[Path, list[Path]] = {}
     for target in (Path(os.path.abspath(p)) for p in paths):
         root = Path(os.path.abspath(settings.root)) if settings.root else discover_root(target)
+        targets_by_root.setdefault(root, []).append(target)
+    for root, targets in sorted(targets_by_root.items()):
         report = workspace_report(root, settings)
         base = root if root.is_dir() else root.parent  # a lone file is its own root
         diagnostics.update((base, d) for d in report.diagnostics)
+
+        def checked(path: str, base: Path = base, targets: list[Path] = targets) -> bool:
+            return any(_is_under(base / path, target) for target in targets)
+
         noqa = _Noqa()
-        for finding in report.findings:
+        for finding in shown_findings(report.findings, checked):
             path = base / finding.location.path
-            if not (_is_under(path, target) and wanted(finding.code)) or config.ignored_in(path, finding.code):
+            if not wanted(finding.code) or config.ignored_in(path, finding.code):
                 continue
             if not noqa.hides(path, finding.location.line, finding.code):
                 findings.add((base, finding))

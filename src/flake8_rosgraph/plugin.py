@@ -3,7 +3,8 @@
 flake8 hands the checker one file at a time; the checker finds the file's
 workspace (:mod:`.root`), gets that workspace's findings (analysed once per run
 and shared between worker processes through :mod:`.cache`) and yields those
-located in this file. flake8 then applies ``# noqa``, ``--select``/``--ignore``
+located in this file (when flake8 checks only some files, also the broken
+connections whose other end is here: :mod:`.partial_runs`). flake8 then applies ``# noqa``, ``--select``/``--ignore``
 and ``--per-file-ignores`` as for any plugin.
 
 The checker never raises: an internal error becomes a ``ROS000`` finding at
@@ -37,6 +38,7 @@ from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selector
                       root_problem)
 from .root import discover_root, find_vcs_root
 from .findings import Finding, localised_message
+from .partial_runs import CONNECTION_CODES, CheckedFiles, shown_findings
 
 #: A flake8 plugin entry name that is a code prefix (``E``, ``F``, ``ROS``).
 _CODE_PREFIX = re.compile(r"^[A-Z]{1,3}[0-9]{0,3}$")
@@ -56,6 +58,8 @@ class _Run:
     stdin: bool = False
     #: That buffer, once the checker has seen it (absolute path → bytes); the report stage reuses it.
     buffers: dict[str, bytes] = field(default_factory=dict, compare=False)
+    #: The files this run checks; ``None`` when flake8 does not tell (then every file counts as checked).
+    checked: CheckedFiles | None = None
 
 
 _RUN: _Run | None = None
@@ -104,6 +108,17 @@ def _by_file(report: WorkspaceReport) -> dict[str, list[Finding]]:
     return index
 
 
+@functools.lru_cache(maxsize=8)
+def _by_other_end(report: WorkspaceReport) -> dict[str, list[Finding]]:
+    """Broken-connection findings by the files of their other ends (see :mod:`.partial_runs`)."""
+    index: dict[str, list[Finding]] = {}
+    for finding in report.findings:
+        if finding.code in CONNECTION_CODES:
+            for path in sorted({loc.path for loc, _ in finding.related} - {finding.location.path}):
+                index.setdefault(path, []).append(finding)
+    return index
+
+
 def _relative(path: Path, root: Path) -> str | None:
     if root.is_file():  # a lone file is its own root; its findings are named relative to its folder
         root = root.parent
@@ -115,12 +130,12 @@ def _relative(path: Path, root: Path) -> str | None:
     return None
 
 
-def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, str] | None:
+def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, Path, str] | None:
     path = Path(os.path.abspath(filename))
     root = _root_for(run, path)
     relative = _relative(path, root)
     buffers = tuple(sorted(run.buffers.items()))
-    return None if relative is None else (workspace_report(root, run.settings, buffers), relative)
+    return None if relative is None else (workspace_report(root, run.settings, buffers), root, relative)
 
 
 def _note_buffer(run: _Run, filename: str, lines: list[str]) -> None:
@@ -143,12 +158,28 @@ def _note_buffer(run: _Run, filename: str, lines: list[str]) -> None:
 
 
 def findings_in_file(run: _Run, filename: str) -> list[Finding]:
-    """The findings of ``filename``'s workspace that are located in ``filename`` and not filtered out."""
+    """The findings of ``filename``'s workspace shown in ``filename`` and not filtered out.
+
+    Those located there, and, when the run checks only some files, those of
+    a broken connection whose other end is here and whose own file is not
+    checked (:mod:`.partial_runs`).
+    """
     found = _file_report(run, filename)
     if found is None:
         return []
-    report, relative = found
-    return [f for f in _by_file(report).get(relative, []) if run.codes(f.code)]
+    report, root, relative = found
+    own = _by_file(report).get(relative, [])
+    if run.checked is None:
+        shown = own
+    else:
+        checked_files = run.checked
+
+        def checked(path: str) -> bool:
+            return path == relative or (root / path) in checked_files
+
+        shown = [f for f in shown_findings([*own, *_by_other_end(report).get(relative, [])], checked)
+                 if f.location.path == relative]
+    return [f for f in shown if run.codes(f.code)]
 
 
 def analysis_errors(run: _Run, filename: str) -> list[str]:
@@ -195,7 +226,8 @@ class RosGraphChecker:
             from .rules import RULES
 
             stdin = list(getattr(options, "filenames", None) or []) == ["-"]
-            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES), stdin=stdin)
+            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES), stdin=stdin,
+                        checked=CheckedFiles.from_flake8(options))
         except Exception as exc:
             if settings.debug:
                 raise

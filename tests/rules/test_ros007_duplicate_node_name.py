@@ -1,21 +1,25 @@
-"""ROS007 duplicate-node-name: two creation sites in one file resolving to the same node FQN."""
-from rosgraph_spec import codes, findings, graph, messages, node, report
+"""ROS007 duplicate-node-name: two creation sites of one node FQN that run together."""
+from rosgraph_spec import cli, codes, findings, graph, messages, node, pub, report, srv, sub
 
 from flake8_rosgraph.graph.model import Location
-from flake8_rosgraph.rules.ros007_duplicate_node_name import DuplicateNodeName
+from flake8_rosgraph.launch.model import Instance, LaunchedNode, System
 
 
-def test_two_sites_in_one_file_are_reported_at_the_later_one():
+def test_two_sites_in_one_file_are_reported_at_both():
     g = graph(node("camera", path="cams.py", line=10), node("camera", path="cams.py", line=11))
-    assert report(g) == ["ROS007 cams.py:11"]
-    assert messages(g) == ["ROS007 node '/camera' is also created at cams.py:10"]
-    (finding,) = findings(g)
-    assert finding.related == ((Location("cams.py", 10, 9), "node '/camera'"),)
+    assert report(g) == ["ROS007 cams.py:10", "ROS007 cams.py:11"]
+    assert messages(g) == [
+        "ROS007 node '/camera' is also created at cams.py:11, and they run together (both are created in this file)",
+        "ROS007 node '/camera' is also created at cams.py:10, and they run together (both are created in this file)",
+    ]
+    later = findings(g)[1]
+    assert later.related == ((Location("cams.py", 10, 9), "node '/camera'"),)
 
 
-def test_three_sites_give_two_findings():
+def test_three_sites_give_three_findings():
     g = graph(*[node("camera", path="cams.py", line=n) for n in (30, 10, 20)])
-    assert report(g) == ["ROS007 cams.py:20", "ROS007 cams.py:30"]
+    assert report(g) == ["ROS007 cams.py:10", "ROS007 cams.py:20", "ROS007 cams.py:30"]
+    assert [len(f.related) for f in findings(g)] == [2, 1, 1]
 
 
 def test_namespaces_make_names_distinct():
@@ -27,7 +31,7 @@ def test_namespaces_make_names_distinct():
 def test_same_namespace_written_differently_resolves_the_same():
     g = graph(node("camera", namespace="/left/", path="cams.py", line=10),
               node("camera", namespace="/left", path="cams.py", line=11))
-    assert codes(g) == ["ROS007"]
+    assert codes(g) == ["ROS007", "ROS007"]
 
 
 def test_alternatives_of_one_site_do_not_count():
@@ -36,12 +40,92 @@ def test_alternatives_of_one_site_do_not_count():
     assert codes(g) == []
 
 
-def test_sites_in_different_files_are_alternative_executables_by_default():
-    g = graph(node("minimal_publisher", path="publisher_old_school.py"),
-              node("minimal_publisher", path="publisher_member_function.py"))
+def test_unconnected_sites_in_different_files_are_alternative_programs():
+    g = graph(node("minimal_publisher", pub("/topic"), path="publisher_old_school.py"),
+              node("minimal_publisher", pub("/topic"), path="publisher_member_function.py"),
+              node("minimal_subscriber", sub("/topic"), path="subscriber.py"))
     assert codes(g) == []
-    assert [f.location.path for f in DuplicateNodeName(across_files=True).check(g, None)] == [
-        "publisher_old_school.py"]
+
+
+def test_nodes_in_two_files_that_talk_to_each_other_are_reported_at_both():
+    g = graph(node("camera", pub("/camera/image"), path="camera_driver/driver.py"),
+              node("camera", sub("/camera/image"), path="camera_driver/viewer.py"))
+    assert report(g) == ["ROS007 camera_driver/driver.py:1", "ROS007 camera_driver/viewer.py:1"]
+    assert messages(g)[0] == ("ROS007 node '/camera' is also created at camera_driver/viewer.py:1, "
+                              "and they run together (they talk over topic '/camera/image')")
+
+
+def test_a_service_call_between_them_counts_too():
+    g = graph(node("arm", srv("/arm/home"), path="arm/server.py"),
+              node("arm", cli("/arm/home"), path="arm/client.py"))
+    assert codes(g) == ["ROS007", "ROS007"]
+
+
+def test_one_node_per_pytest_function_is_quiet():
+    # test functions are separate processes: the same name in each of them is no duplicate
+    g = graph(*[node("test_node", pub("/probe"), path="my_pkg/test/test_probe.py", line=n) for n in (10, 20, 30)])
+    assert codes(g) == []
+
+
+def test_test_nodes_that_talk_to_each_other_are_reported():
+    g = graph(node("fixture", pub("/probe"), path="my_pkg/test/test_probe.py", line=10),
+              node("fixture", sub("/probe"), path="my_pkg/test/test_probe.py", line=20))
+    assert codes(g) == ["ROS007", "ROS007"]
+
+
+def launched(system_file, code, line=5, name=None):
+    launched_node = LaunchedNode("pkg", "exe", Location(system_file, line, 1), system_file, name=name)
+    return Instance(launched_node, code, code)
+
+
+def instance_of(code, launch_file, line):
+    """The node as a launch action at ``launch_file:line`` starts it (the judged graph holds one per action)."""
+    started = node(code.name, *[], path=code.location.path, line=code.location.line)
+    started.entities = list(code.entities)
+    started.launch = {"file": launch_file, "line": line}
+    return started
+
+
+def test_one_executable_launched_twice_under_one_name_is_reported_at_both_actions():
+    code = node("scan_pipeline", pub("/scan_filtered"), path="lidar/lidar/filter.py")
+    first, second = instance_of(code, "bringup/sensors.launch.py", 8), instance_of(code, "bringup/sensors.launch.py", 9)
+    g = graph(first, second)
+    g.systems = [System("bringup/sensors.launch.py",
+                        instances=[launched("bringup/sensors.launch.py", first, 8, "scan_pipeline"),
+                                   launched("bringup/sensors.launch.py", second, 9, "scan_pipeline")])]
+    assert report(g) == ["ROS007 bringup/sensors.launch.py:8", "ROS007 bringup/sensors.launch.py:9"]
+
+
+def test_one_executable_named_alike_in_two_launch_files_is_quiet():
+    code = node("scan_pipeline", pub("/scan_filtered"), path="lidar/lidar/filter.py")
+    first, second = instance_of(code, "bringup/sim.launch.py", 8), instance_of(code, "bringup/real.launch.py", 8)
+    g = graph(first, second)
+    g.systems = [System(path, instances=[launched(path, started, 8, "scan_pipeline")])
+                 for path, started in (("bringup/sim.launch.py", first), ("bringup/real.launch.py", second))]
+    assert codes(g) == []
+
+
+def test_nodes_started_by_one_launch_file_are_reported():
+    a = node("driver", pub("/left/scan"), path="pkg_a/a.py")
+    b = node("driver", pub("/right/scan"), path="pkg_b/b.py")
+    g = graph(a, b)
+    both = [launched("bringup/robot.launch.py", a), launched("bringup/robot.launch.py", b)]
+    g.systems = [System("bringup/robot.launch.py", instances=both)]
+    assert messages(g, select=["ROS007"]) == [
+        "ROS007 node '/driver' is also created at pkg_b/b.py:1, and they run together "
+        "(both are started by bringup/robot.launch.py)",
+        "ROS007 node '/driver' is also created at pkg_a/a.py:1, and they run together "
+        "(both are started by bringup/robot.launch.py)",
+    ]
+
+
+def test_nodes_started_by_different_launch_files_are_quiet():
+    a = node("driver", pub("/left/scan"), path="pkg_a/a.py")
+    b = node("driver", pub("/right/scan"), path="pkg_b/b.py")
+    g = graph(a, b)
+    g.systems = [System("bringup/left.launch.py", instances=[launched("bringup/left.launch.py", a)]),
+                 System("bringup/right.launch.py", instances=[launched("bringup/right.launch.py", b)])]
+    assert codes(g, select=["ROS007"]) == []
 
 
 def test_unknown_names_are_not_compared():

@@ -36,10 +36,18 @@ def test_server_of_another_type_is_no_near_miss():
     assert messages(g) == ["ROS009 action '/dok' has no server"]
 
 
-def test_served_name_is_no_near_miss():
-    # '/fibonacci' already has its client: not the partner of '/fibonaci'.
+def test_served_name_is_a_near_miss_too():
+    # '/fibonacci' already has its client: a second client that misspelt it is still a typo.
     g = graph(*connected(acli("/fibonaci", type=FIB)))
-    assert messages(g) == ["ROS009 action '/fibonaci' has no server"]
+    assert messages(g) == [
+        "ROS009 action '/fibonaci' has no server; did you mean '/fibonacci' (served at robot.py:2)?"]
+
+
+def test_short_names_need_a_plausible_typo():
+    # a substitution in a four-letter word is another word; a swap of neighbours is a typo
+    assert messages(graph(*connected(acli("/dick", type=DOCK)))) == ["ROS009 action '/dick' has no server"]
+    assert messages(graph(*connected(acli("/dcok", type=DOCK)))) == [
+        "ROS009 action '/dcok' has no server; did you mean '/dock' (served at robot.py:3)?"]
 
 
 def test_unresolved_action_server_silences():

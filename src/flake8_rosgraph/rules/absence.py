@@ -1,7 +1,8 @@
 """What ROS001, ROS003, ROS008 and ROS009 share: reporting an end whose other end is missing.
 
 An absence is only as good as the analysis that failed to find the other end,
-so these rules stay quiet whenever something could fill the gap:
+so these rules stay quiet whenever something could fill the gap (test
+fixtures only fill gaps of the package they test: :mod:`.fixtures`):
 
 * the name is exempt (infrastructure, rviz tools, per-node built-in services,
   or the user's external names — see :mod:`.exempt`);
@@ -14,8 +15,10 @@ so these rules stay quiet whenever something could fill the gap:
 **Interfaces.** Most dangling ends in real repositories are deliberate: the
 other end is a C++ node, a robot, a simulator, rviz or a person at the command
 line. A dangling end is taken for such an interface, and reported only when a
-near-miss partner exists (a likely typo or namespace slip — the strongest
-signal), when
+near name is used in the other role (a likely typo or namespace slip — the
+strongest signal; every name of the other role counts, connected or not,
+since a typo usually hits a name that other nodes still use: see
+:mod:`.near_miss`), when
 
 * the node has no endpoint of the same kind that reaches another node of the
   workspace — none of its publishers (for ROS001) is subscribed here, so its
@@ -76,18 +79,13 @@ class AbsenceRule(Rule):
             return
         dangling = self._whole_sites_only(dangling, index)
         peer_kind = PEER_KIND[self.kind]
-        dangling_peers = {
-            name: index.using(peer_kind, name) for name in index.names(peer_kind)
-            if name not in exempt and not index.using(self.kind, name)
-        }
-        near_misses = NearMissFinder(dangling_peers)
+        near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
         for endpoint in dangling:
-            name = endpoint.entity.name
             interface = (id(endpoint.node) not in wired
-                         or index.node_counts[(self.kind, name)] > 1
-                         or namespace_of(name) in one_way)
+                         or index.same_role_nodes(endpoint) > 1
+                         or namespace_of(endpoint.entity.name) in one_way)
             yield from self._report(endpoint, near_misses, interface)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:

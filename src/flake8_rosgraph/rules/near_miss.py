@@ -1,54 +1,97 @@
-"""The near-miss hint: a dangling end whose likely partner is dangling too, under a slightly different name.
+"""The near-miss hint: the name a dangling end probably meant, among every name of the other role.
 
-A publisher on ``/cmd_vel`` with no subscriber *and* a subscription on
-``/cmdvel`` with no publisher is the strongest signal the wiring rules have: it
-is almost always a typo or a namespace slip, not an interface. Two names are
-near misses when, with compatible message types,
+A typo usually hits a name that other nodes still use correctly (a second
+listener on ``/chatter`` misspelt ``/chater``), so the partner it meant is
+*connected*, not dangling: every name used in the other role is a candidate,
+whatever its state. Two names are near misses, with compatible message types,
+when they are the same name
 
-* they are within a small edit distance (1 for names shorter than
-  :data:`LONG_NAME` characters, 2 otherwise, 1 again past
-  :data:`MAX_DISTANCE_2_NAME`; none past :data:`MAX_HINTED_NAME`), or
-* they differ only by namespace: the same last component
-  (``/robot1/scan`` vs ``/scan``; a forgotten or extra leading ``/`` in code
-  shows up this way once names are resolved);
+* resolved differently: the written name of the dangling end, taken as
+  private (``~/x``), relative (``x``) or absolute (``/x``) in its node, gives
+  the other name;
+* with one namespace token dropped or added (``/robot/scan`` vs ``/scan``);
+* up to case and the plural of the last word (``/Scan``, ``/goal_poses``);
+* with one token misspelt (edit distance with transpositions): for a token of
+  at most :data:`SHORT_TOKEN` characters only a swap of two neighbours or one
+  character more or less (``/odmo``, ``/odoom``, ``/dok``; a substitution in a
+  short word is as often another word: ``/left``, ``/lift``), one edit up to
+  :data:`LONG_TOKEN` characters, two beyond;
 
-but not when they differ only in their numbers (``/topic5`` vs ``/topic8``,
-``/robot1/odom`` vs ``/robot2/odom``): numbered names are deliberate families.
+but never when they differ only in their numbers (``/topic5`` vs ``/topic8``,
+``/robot1/odom`` vs ``/robot2/odom``, ``/cmd`` vs ``/cmd2``): numbered names
+are deliberate families.
+
+The index holds, per peer name, a bounded number of keys (its folded forms,
+its names with one token dropped, and per token its deletion variants, depth
+two only for tokens of at most :data:`DEEP_TOKEN` characters), so building it
+and looking a name up stay linear in the total length of the names.
 """
 from __future__ import annotations
 
 import re
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Iterable, Sequence
 
-from ..graph.names import edit_distance
+from ..graph.model import RosNode
 from .topics import Endpoint, types_compatible
 
-#: Names at least this long tolerate an edit distance of 2 instead of 1.
-LONG_NAME = 10
-#: The largest edit distance any lookup tolerates (that of long names).
-MAX_DISTANCE = 2
-#: The deletion index grows with the cube of a name's length at distance 2 (400 names of a
-#: few hundred characters took a minute and gigabytes): names longer than this are matched
-#: at distance 1 only, and names longer than :data:`MAX_HINTED_NAME` (which rcl rejects) get no hint.
-MAX_DISTANCE_2_NAME = 64
-MAX_HINTED_NAME = 256
+#: Tokens of at most this many characters accept only a transposition or one character more or less.
+SHORT_TOKEN = 5
+#: ... and only when both keep at least this many characters (``/a`` and ``/ab`` are just different).
+MIN_TOKEN = 2
+#: Tokens shorter than this accept one edit; longer ones two.
+LONG_TOKEN = 10
+#: Tokens longer than this are indexed with single deletions only (two-edit typos there go unseen).
+DEEP_TOKEN = 24
 
 _NUMBER = re.compile(r"\d+")
+#: Plural endings and what the singular may end with instead (``poses``: ``pose``; ``statuses``: ``status``).
+_PLURAL = (("ies", ("y",)), ("es", ("e", "")), ("s", ("",)))
+#: Endings of singular words that look plural (``status``, ``axis``, ``pass``).
+_NOT_PLURAL = ("ss", "us", "is")
+
+#: Kinds of near miss, best first: a resolution slip is an exact fact; a typo beats a leaf shared across namespaces.
+RESOLUTION, FOLDED, SPELLING, NAMESPACE_TOKEN = range(4)
 
 
-def _basename(name: str) -> str:
-    return name.rsplit("/", 1)[-1]
+def _tokens(name: str) -> list[str]:
+    return [t for t in name.split("/") if t]
+
+
+def _join(tokens: Sequence[str]) -> str:
+    return "/" + "/".join(tokens)
+
+
+def _singulars(word: str) -> set[str]:
+    """``word`` if it is no plural, else what its singular may be (``boxes``: ``boxe`` or ``box``)."""
+    if word.endswith(_NOT_PLURAL):
+        return {word}
+    for suffix, replacements in _PLURAL:
+        if word.endswith(suffix) and len(word) > len(suffix) + 1:
+            return {word[: -len(suffix)] + r for r in replacements}
+    return {word}
+
+
+def folded(name: str) -> set[str]:
+    """``name`` in lower case with the last word of its last token in the singular (each way it may be)."""
+    head, _, last = name.lower().rpartition("/")
+    *words, word = last.split("_")
+    return {f"{head}/{'_'.join([*words, singular])}" for singular in _singulars(word)}
+
+
+def _without_one_token(tokens: Sequence[str]) -> Iterable[str]:
+    if len(tokens) > 1:
+        for i in range(len(tokens)):
+            yield _join([*tokens[:i], *tokens[i + 1:]])
 
 
 def _deletions(word: str, depth: int) -> set[str]:
     """``word`` and every string made from it by deleting up to ``depth`` characters.
 
-    Two strings within Levenshtein distance *k* always share such a variant
-    with at most *k* deletions on each side (delete the substituted and the
-    inserted characters), so matching variants finds every candidate without
-    comparing all pairs of names.
+    Two strings within *k* edits (with transpositions) always share such a
+    variant with at most *k* deletions on each side, so matching variants
+    finds every candidate without comparing all pairs of names.
     """
     variants = {word}
     frontier = {word}
@@ -58,59 +101,155 @@ def _deletions(word: str, depth: int) -> set[str]:
     return variants
 
 
-def _depth(name: str) -> int:
-    """The edit distance indexed and tolerated for ``name`` (see :data:`MAX_DISTANCE_2_NAME`)."""
-    return MAX_DISTANCE if len(name) <= MAX_DISTANCE_2_NAME else 1
+def _depth(token: str) -> int:
+    return 2 if LONG_TOKEN <= len(token) <= DEEP_TOKEN else 1
+
+
+def _spelling_keys(tokens: Sequence[str]) -> Iterable[int]:
+    """Hashed (token position, the other tokens, deletion variant of the token) keys of a name."""
+    for i, token in enumerate(tokens):
+        context = hash((i, len(tokens), tuple(tokens[:i]), tuple(tokens[i + 1:])))
+        for variant in _deletions(token, _depth(token)):
+            yield hash((context, variant))
+
+
+def transposition_distance(a: str, b: str, limit: int) -> int:
+    """Edit distance counting a swap of neighbours as one edit (optimal string alignment), capped at ``limit + 1``.
+
+    Only the diagonal band of width ``limit`` is computed: cells farther from
+    it need more than ``limit`` insertions or deletions, so a comparison costs
+    ``O(len * limit)`` however long the names are.
+    """
+    if a == b:
+        return 0
+    if abs(len(a) - len(b)) > limit:
+        return limit + 1
+    over = limit + 1
+    before: dict[int, int] = {}
+    previous = {j: j for j in range(min(len(b), limit) + 1)}
+    for i in range(1, len(a) + 1):
+        current = {0: i} if i <= limit else {}
+        for j in range(max(1, i - limit), min(len(b), i + limit) + 1):
+            best = min(previous.get(j, over) + 1, current.get(j - 1, over) + 1,
+                       previous.get(j - 1, over) + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                best = min(best, before.get(j - 2, over) + 1)
+            current[j] = best
+        if min(current.values(), default=over) > limit:
+            return over
+        before, previous = previous, current
+    return min(previous.get(len(b), over), over)
+
+
+def token_typo(a: str, b: str) -> int | None:
+    """The edit distance between two tokens if one is a plausible misspelling of the other, else ``None``."""
+    if max(len(a), len(b)) <= SHORT_TOKEN:
+        if transposition_distance(a, b, 1) != 1:
+            return None
+        swapped = len(a) == len(b) and sorted(a) == sorted(b)
+        dropped = len(a) != len(b) and min(len(a), len(b)) >= MIN_TOKEN
+        return 1 if swapped or dropped else None
+    limit = 1 if min(len(a), len(b)) < LONG_TOKEN else 2
+    distance = transposition_distance(a, b, limit)
+    return distance if 0 < distance <= limit else None
+
+
+def resolutions(endpoint: Endpoint) -> set[str]:
+    """The names the endpoint's written name would have as private, relative or absolute name in its node."""
+    raw = endpoint.entity.raw_name
+    node: RosNode = endpoint.node
+    if not raw or node.name is None or node.namespace is None or "{" in raw:
+        return set()
+    base = raw[2:] if raw.startswith("~/") else raw.lstrip("/~")
+    if not base:
+        return set()
+    namespace = node.namespace.rstrip("/")
+    return {f"{namespace}/{node.name}/{base}", f"{namespace}/{base}", f"/{base}"}
+
+
+def is_family(a: str, b: str) -> bool:
+    """Names that differ only in their numbers: a deliberate family, never a typo."""
+    return _NUMBER.sub("", a) == _NUMBER.sub("", b)
 
 
 @dataclass(frozen=True)
 class NearMiss:
-    """The dangling peer name a dangling end probably meant, and where that peer is."""
+    """The peer name a dangling end probably meant, and where that peer is."""
 
     name: str
     peer: Endpoint
 
 
 class NearMissFinder:
-    """Looks up near misses among the dangling peers of one kind.
+    """Looks up near misses among every name used by the peer kind.
 
-    Built once per rule run from the dangling peer names (indexed by their
-    deletion variants and by their last component), so a lookup touches only
-    plausible candidates, never every dangling name of the workspace.
+    Built once per rule run; a lookup touches only the names sharing one of
+    its keys, never every name of the workspace.
     """
 
-    def __init__(self, dangling_peers: dict[str, Sequence[Endpoint]]) -> None:
-        self._peers = dangling_peers
-        self._by_variant: dict[str, set[str]] = defaultdict(set)
-        self._by_basename: dict[str, list[str]] = defaultdict(list)
-        for name in sorted(n for n in dangling_peers if len(n) <= MAX_HINTED_NAME):
-            for variant in _deletions(name, _depth(name)):
-                self._by_variant[variant].add(name)
-            self._by_basename[_basename(name)].append(name)
+    def __init__(self, peers: dict[str, Sequence[Endpoint]]) -> None:
+        self._peers = peers
+        self._folded: dict[str, list[str]] = defaultdict(list)
+        self._one_token_more: dict[str, list[str]] = defaultdict(list)
+        self._spelling: dict[int, list[str]] = defaultdict(list)
+        for name in sorted(peers):
+            tokens = _tokens(name)
+            for key in folded(name):
+                self._folded[key].append(name)
+            for shorter in _without_one_token(tokens):
+                self._one_token_more[shorter].append(name)
+            for key in set(_spelling_keys(tokens)):
+                self._spelling[key].append(name)
 
-    def find(self, endpoint: Endpoint) -> NearMiss | None:
-        """The best near miss for ``endpoint`` (closest name first, then alphabetical), if any."""
+    def candidates(self, endpoint: Endpoint) -> dict[str, tuple[int, int]]:
+        """Peer names near ``endpoint``'s name, each with its (kind of near miss, distance)."""
         name = endpoint.entity.name
-        if name is None or len(name) > MAX_HINTED_NAME:
-            return None
-        limit = 1 if len(name) < LONG_NAME else _depth(name)
-        candidates: dict[str, int] = {}
-        for variant in _deletions(name, limit):
-            for other in self._by_variant.get(variant, ()):
-                if other not in candidates:
-                    distance = edit_distance(name, other, limit)
-                    if distance <= limit:
-                        candidates[other] = distance
-        for other in self._by_basename.get(_basename(name), ()):
-            candidates.setdefault(other, edit_distance(name, other, len(name) + len(other)))
-        ranked = sorted((distance, other) for other, distance in candidates.items()
-                        if self._plausible(name, other))
-        for _, other in ranked:
-            compatible = [p for p in self._peers[other] if types_compatible(endpoint.entity.type, p.entity.type)]
-            if compatible:
-                return NearMiss(other, compatible[0])
-        return None
+        if name is None:
+            return {}
+        tokens = _tokens(name)
+        found: dict[str, tuple[int, int]] = {}
+
+        def add(other: str, rank: tuple[int, int]) -> None:
+            if other != name and other in self._peers and not is_family(name, other):
+                found[other] = min(found.get(other, rank), rank)
+
+        for other in resolutions(endpoint):
+            add(other, (RESOLUTION, abs(len(_tokens(other)) - len(tokens))))
+        for key in folded(name):
+            for other in self._folded.get(key, ()):
+                add(other, (FOLDED, 0))
+        for other in self._one_token_more.get(name, ()):
+            add(other, (NAMESPACE_TOKEN, 1))
+        for shorter in _without_one_token(tokens):
+            add(shorter, (NAMESPACE_TOKEN, 1))
+        seen: set[str] = set()
+        for key in set(_spelling_keys(tokens)):
+            for other in self._spelling.get(key, ()):
+                if other not in seen:
+                    seen.add(other)
+                    distance = self._spelling_distance(tokens, _tokens(other))
+                    if distance is not None:
+                        add(other, (SPELLING, distance))
+        return found
 
     @staticmethod
-    def _plausible(name: str, other: str) -> bool:
-        return _NUMBER.sub("#", name) != _NUMBER.sub("#", other)
+    def _spelling_distance(tokens: list[str], others: list[str]) -> int | None:
+        if len(tokens) != len(others):
+            return None
+        differing = [(a, b) for a, b in zip(tokens, others) if a != b]
+        return token_typo(*differing[0]) if len(differing) == 1 else None
+
+    def find(self, endpoint: Endpoint) -> NearMiss | None:
+        """The best near miss for ``endpoint`` (surest kind, then closest, then alphabetical), if any.
+
+        The partner must be able to run with the endpoint (:meth:`Endpoint.sees`),
+        sit on another node (not another instance of the same code node, as two
+        launch files make it), and have a type that does not rule the match out.
+        """
+        ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
+        for _, other in ranked:
+            for peer in self._peers[other]:
+                if (peer.node.location != endpoint.node.location and endpoint.sees(peer)
+                        and types_compatible(endpoint.entity.type, peer.entity.type)):
+                    return NearMiss(other, peer)
+        return None

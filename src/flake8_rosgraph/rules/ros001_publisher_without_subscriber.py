@@ -9,6 +9,13 @@ class PublisherWithoutSubscriber(AbsenceRule):
     Checks for topics that are published but that nothing in the analysed
     workspace subscribes to.
 
+    The end is compared with every topic name subscribed in the workspace,
+    connected or not, with a compatible type. A *near name* — a typo (swapped,
+    missing, doubled or changed characters, case, singular/plural of the last
+    word), the written name resolved as private (`~/x`), relative or absolute
+    in its node, or one namespace token more or less — is named in the
+    message ("did you mean ...?") with its location as related location.
+
     ## Why is this bad?
     Messages nobody receives are wasted work, and far more often the symptom of
     a wiring mistake: a typo in the topic name (`/cmd_vel` vs `/cmdvel`), a
@@ -21,7 +28,7 @@ class PublisherWithoutSubscriber(AbsenceRule):
     nodes, robots, rviz, `ros2 topic echo` or bag recordings look
     unsubscribed. To stay useful on real repositories it reports only the
     *odd one out*: a topic of a node whose other publishers do feed the
-    workspace. It stays quiet (unless a near-miss subscription exists) when
+    workspace. It stays quiet (unless a near name is subscribed) when
     none of the node's publishers has a subscriber here (a driver's or
     tool's outputs), when several nodes publish the topic, or when the
     workspace only publishes into the topic's namespace (`/camera/...`).
@@ -32,6 +39,20 @@ class PublisherWithoutSubscriber(AbsenceRule):
     some subscription's topic name could not be resolved and its type does
     not rule the match out, and when another alternative of the same
     creation site (`'a' if sim else 'b'`) is connected.
+
+    Numbered families (`/robot1/odom` vs `/robot2/odom`, `/cmd` vs `/cmd2`)
+    are never near names, nor is one last name in two namespaces
+    (`/left/image`, `/right/image`). A token of at most five characters
+    matches only a swap of neighbours or one character more or less (`/left`
+    and `/lift` are two words), longer ones one edit, from ten characters
+    two. Test fixtures (nodes in `test/` or `tests/` folders, `test_*.py`
+    modules, nodes started by launch files there) form their own system:
+    they connect with the fixtures and the production nodes of the package
+    they test only, so a test's end never makes a production end look
+    connected. Ends created by a shared helper function sit at the helper's
+    creation call, where several count as alternatives of one site. When
+    flake8 checks only some files (pre-commit), a near-name finding whose
+    end is not checked is shown at the checked near end.
 
     ## Example
     ```python

@@ -9,6 +9,13 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     Checks for topics that are subscribed but that nothing in the analysed
     workspace publishes.
 
+    The end is compared with every topic name published in the workspace,
+    connected or not, with a compatible type. A *near name* — a typo (swapped,
+    missing, doubled or changed characters, case, singular/plural of the last
+    word), the written name resolved as private (`~/x`), relative or absolute
+    in its node, or one namespace token more or less — is named in the
+    message ("did you mean ...?") with its location as related location.
+
     ## Why is this bad?
     The callback never runs. The node waits forever for data that does not
     come, usually because of a typo in the topic name, a namespace slip
@@ -19,7 +26,7 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     Topics published by C++ nodes, drivers, simulators, rviz, the command
     line or bag playback look unpublished. The rule reports only the *odd one
     out*: a topic of a node whose other subscriptions are fed by the
-    workspace. It stays quiet (unless a near-miss publisher exists) when none
+    workspace. It stays quiet (unless a near name is published) when none
     of the node's subscriptions has a publisher here (a tool fed from
     outside), when several nodes subscribe to the topic, or when the
     workspace only subscribes within the topic's namespace (`/fmu/out/...`).
@@ -29,6 +36,9 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     `/goal_pose`) are exempt. It also stays quiet when some publisher's topic
     name could not be resolved and its type does not rule the match out, and
     when another alternative of the same creation site is connected.
+    Which names count as near, how test fixtures are kept apart from
+    production nodes, and how a changed-files run shows a near-name finding
+    are as for ROS001 (see its Known problems).
 
     ## Example
     ```python

@@ -31,7 +31,10 @@ class MessageTypeMismatch(Rule):
     its choices agrees. The finding is reported
     at each endpoint whose type differs from the type most endpoints of the
     name use (on a tie, the publishers' or servers' type), since that is the
-    side most likely wrong; the other side is the related location.
+    side most likely wrong; the other side is the related location. When
+    flake8 checks only some files (pre-commit, pull-request checks) and that
+    endpoint's file is not among them, the finding is shown at the checked
+    other side instead.
 
     ## Example
     ```python

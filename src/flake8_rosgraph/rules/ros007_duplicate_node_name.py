@@ -4,14 +4,24 @@ from __future__ import annotations
 from collections import defaultdict
 from typing import Iterator
 
-from ..graph.model import Location, RosGraph
+from ..graph.model import PEER_KIND, Location, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
+from .fixtures import node_scope
+from .topics import Endpoint, EndpointIndex
+from .vocabulary import NAME_NOUN
 
 
 class DuplicateNodeName(Rule):
     """## What it does
-    Checks for two node creation sites in one source file that resolve to the
-    same fully qualified node name.
+    Checks for two node creation sites that resolve to the same fully
+    qualified node name and run together: both started by one launch file
+    (with what it includes), both created in one source file (one process),
+    or talking to each other (one publishes a topic the other subscribes,
+    serves a service or action the other calls: a system split over several
+    launch files still runs as one). The finding is reported at
+    both sites, each with the other as related location: the creation site
+    in code, or the launch action when a launch file sets the node's name
+    (so one executable launched twice under one name is reported too).
 
     ## Why is this bad?
     ROS 2 does not enforce unique node names: both nodes start, but tools
@@ -20,31 +30,31 @@ class DuplicateNodeName(Rule):
     random, and the parameter services of the two collide.
 
     ## Known problems
-    The rule must only compare nodes that can run together, and the graph
-    does not yet record which executable or launch file starts which node.
-    Nodes created in one file run in one process far more often than not, so
-    the rule compares those only. Measured with the extractor on 15 public
-    repositories with rclpy nodes (120 nodes): all 21 repetitions of a node
-    name across files are alternative programs that never run together
-    (tutorial variants such as `minimal_publisher` in three styles, Nav2's
-    test programs all named `nav2_tester`); no name is created twice in one
-    file. Alternatives of one creation site (`Node('a' if x else 'b')`) and
-    nodes created by one call inside a loop are one site and do not
-    count. The knob `DuplicateNodeName(across_files=True)` compares all
-    files.
+    Nodes of one name in files that are neither launched together nor
+    connected are alternative programs (tutorial variants such as
+    `minimal_publisher` in three styles), so they are not compared. Test
+    files are not one process: a pytest module that creates a node of the
+    same name in each test function is quiet, unless its nodes talk to each
+    other or one launch test starts them. Two classes in two modules that one
+    `main` instantiates together are not seen as one process (the graph does
+    not record which entry point creates a node). Alternatives of one
+    creation site (`Node('a' if x else 'b')`) and nodes created by one call
+    inside a loop are one site and are not reported.
 
     ## Example
     ```python
-    def main():
-        rclpy.init()
-        left = rclpy.create_node('camera')
-        right = rclpy.create_node('camera')
+    # camera_driver/driver.py
+    super().__init__('camera')
+    self.create_publisher(Image, 'image_raw', 10)
+    # camera_driver/viewer.py
+    super().__init__('camera')
+    self.create_subscription(Image, 'image_raw', self.show, 10)
     ```
 
     ## Use instead
     ```python
-        left = rclpy.create_node('camera', namespace='left')
-        right = rclpy.create_node('camera', namespace='right')
+    # camera_driver/viewer.py
+    super().__init__('camera_viewer')
     ```
 
     ## Options
@@ -57,18 +67,93 @@ class DuplicateNodeName(Rule):
     precision = "medium"  # SARIF/code-scanning precision: how often a finding is a real problem
     summary = "two nodes that can run together resolve to the same fully qualified name"
 
-    def __init__(self, across_files: bool = False) -> None:
-        #: Knob: also compare creation sites in different files (for workspaces whose files are one system).
-        self.across_files = across_files
-
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
-        sites: dict[tuple[str, str], set[Location]] = defaultdict(set)
+        groups: dict[str, list[RosNode]] = defaultdict(list)
         for node in graph.nodes:
             if node.fqn is not None:
-                scope = "" if self.across_files else node.location.path
-                sites[(scope, node.fqn)].add(node.location)
-        for (_, fqn), locations in sorted(sites.items()):
-            first, *others = sorted(locations)
-            for location in others:
-                message = f"node '{fqn}' is also created at {first.short()}"
-                yield Finding(location, self.code, message, ((first, f"node '{fqn}'"),))
+                groups[node.fqn].append(node)
+        together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
+        for fqn in sorted(groups):
+            yield from self._duplicates(fqn, groups[fqn], together)
+
+    def _duplicates(self, fqn: str, nodes: list[RosNode], together: _Together) -> Iterator[Finding]:
+        # site -> partner site -> why they run together (the first reason found, in a fixed order)
+        partners: dict[Location, dict[Location, str]] = defaultdict(dict)
+        for reason, a, b in together.pairs(nodes):
+            site_a, site_b = together.site(a), together.site(b)
+            if site_a != site_b:
+                partners[site_a].setdefault(site_b, reason)
+                partners[site_b].setdefault(site_a, reason)
+        for site in sorted(partners):
+            others = sorted(partners[site])
+            first = others[0]
+            message = (f"node '{fqn}' is also created at {first.short()}, "
+                       f"and they run together ({partners[site][first]})")
+            yield Finding(site, self.code, message, tuple((o, f"node '{fqn}'") for o in others))
+
+
+class _Together:
+    """Which nodes of one name run together, from the launch systems, the files and the wiring."""
+
+    def __init__(self, graph: RosGraph, duplicated: list[str]) -> None:
+        wanted = set(duplicated)
+        self._systems: dict[int, list[str]] = defaultdict(list)
+        self._named_at: dict[int, Location] = {}
+        for system in graph.systems:
+            for instance in system.instances:
+                if instance.node.fqn in wanted:
+                    self._systems[id(instance.node)].append(system.launch_file)
+                    launched = instance.launched
+                    if launched.name is not None:
+                        self._named_at[id(instance.node)] = Location(
+                            launched.launch_file, launched.location.line, launched.location.column)
+        self._index = EndpointIndex.build(graph) if wanted else None
+
+    def site(self, node: RosNode) -> Location:
+        """Where to fix the name: the launch action that names the node, else the node's creation site."""
+        return self._named_at.get(id(node), node.location)
+
+    def pairs(self, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
+        """``(why, a, b)`` for nodes of ``nodes`` that run together, launch first, then file, then wiring.
+
+        Each relation is bucketed (by launch file, by file, by name used), so
+        the work is linear in the nodes and their entities, not in their pairs.
+        """
+        ordered = sorted(nodes, key=lambda n: (n.location, repr(n.launch)))
+        by_launch: dict[str, list[RosNode]] = defaultdict(list)
+        by_file: dict[str, list[RosNode]] = defaultdict(list)
+        for node in ordered:
+            for launch_file in sorted(set(self._systems.get(id(node), ()))):
+                by_launch[launch_file].append(node)
+            # A file is one process for code run as written; a launched node's process is its launch
+            # action, and test functions are separate processes.
+            if node.launch is None and node_scope(node) is None:
+                by_file[node.location.path].append(node)
+        for launch_file, started in sorted(by_launch.items()):
+            yield from _chained(f"both are started by {launch_file}", started)
+        for _, created in sorted(by_file.items()):
+            yield from _chained("both are created in this file", created)
+        yield from self._talking(ordered)
+
+    def _talking(self, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
+        if self._index is None:
+            return
+        members = {id(n) for n in nodes}
+        for node in nodes:
+            scope = node_scope(node)
+            for entity in node.entities:
+                if entity.name is None or entity.kind not in PEER_KIND:
+                    continue
+                for peer in self._index.peers(Endpoint(node, entity, scope)):
+                    if id(peer.node) in members and peer.node is not node:
+                        yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
+
+
+def _chained(reason: str, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
+    """The nodes of one bucket (which all run together) paired so that every site has a partner.
+
+    The first node is paired with each node of another site: linear, where
+    all pairs would be quadratic in the size of the bucket.
+    """
+    for node in nodes[1:]:
+        yield reason, nodes[0], node

@@ -9,6 +9,13 @@ class ServiceClientWithoutServer(AbsenceRule):
     Checks for service clients whose service no node of the analysed workspace
     serves.
 
+    The end is compared with every service name served in the workspace,
+    connected or not, with a compatible type. A *near name* — a typo (swapped,
+    missing, doubled or changed characters, case, singular/plural of the last
+    word), the written name resolved as private (`~/x`), relative or absolute
+    in its node, or one namespace token more or less — is named in the
+    message ("did you mean ...?") with its location as related location.
+
     ## Why is this bad?
     `wait_for_service()` never returns (or times out on every call) and
     `call_async()` futures never complete. The cause is usually a misspelt
@@ -17,8 +24,8 @@ class ServiceClientWithoutServer(AbsenceRule):
     ## Known problems
     Services served by C++ nodes (Nav2, ros2_control, drivers) look unserved.
     The rule reports only a client of a node whose other clients reach
-    servers of the workspace; it stays quiet (unless a near-miss server
-    exists) when none of the node's clients is served here, when several
+    servers of the workspace; it stays quiet (unless a near name
+    is served) when none of the node's clients is served here, when several
     nodes call the service, or when the workspace only calls into the
     service's namespace (`/local_costmap/clear_...`: another node's
     services). The services every node serves itself (parameter services
@@ -26,6 +33,9 @@ class ServiceClientWithoutServer(AbsenceRule):
     services, and the lifecycle services of lifecycle nodes) are exempt. It
     also stays quiet when some server's name could not be resolved and its
     type does not rule the match out.
+    Which names count as near, how test fixtures are kept apart from
+    production nodes, and how a changed-files run shows a near-name finding
+    are as for ROS001 (see its Known problems).
 
     ## Example
     ```python

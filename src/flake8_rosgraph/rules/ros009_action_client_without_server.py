@@ -9,6 +9,13 @@ class ActionClientWithoutServer(AbsenceRule):
     Checks for action clients whose action no node of the analysed workspace
     serves.
 
+    The end is compared with every action name served in the workspace,
+    connected or not, with a compatible type. A *near name* — a typo (swapped,
+    missing, doubled or changed characters, case, singular/plural of the last
+    word), the written name resolved as private (`~/x`), relative or absolute
+    in its node, or one namespace token more or less — is named in the
+    message ("did you mean ...?") with its location as related location.
+
     ## Why is this bad?
     `wait_for_server()` blocks forever and goals are never accepted. The cause
     is usually a misspelt action name or a server in another namespace.
@@ -18,11 +25,14 @@ class ActionClientWithoutServer(AbsenceRule):
     `move_action`, controllers' `follow_joint_trajectory`) look unserved;
     declare them as external names. The rule reports only an action client of
     a node whose other action clients reach servers of the workspace; it
-    stays quiet (unless a near-miss server exists) when none of them does,
+    stays quiet (unless a near name is served) when none of them does,
     when several nodes use the action, or when the workspace only uses
     actions of the action's namespace in this role. It also stays quiet when
     some action server's name could not be resolved and its type does not
     rule the match out.
+    Which names count as near, how test fixtures are kept apart from
+    production nodes, and how a changed-files run shows a near-name finding
+    are as for ROS001 (see its Known problems).
 
     ## Example
     ```python

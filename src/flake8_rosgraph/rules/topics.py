@@ -4,6 +4,9 @@ Every wiring rule asks the same questions — "who else uses this name with the
 other role?", "could an entity whose name we could not resolve be that other
 end?", "does this node talk to anybody?" — and answering them by rescanning
 the graph per entity would make the rules quadratic in the workspace size.
+
+Test fixtures form their own systems (:mod:`.fixtures`): :meth:`EndpointIndex.peers`
+and the other "who talks to whom" questions only pair ends that can run together.
 """
 from __future__ import annotations
 
@@ -12,6 +15,7 @@ from dataclasses import dataclass, field
 
 from ..graph.model import NAMED_KINDS, PEER_KIND, Entity, RosGraph, RosNode
 from .exempt import ExemptNames
+from .fixtures import node_scope, sees
 
 
 @dataclass(frozen=True)
@@ -20,6 +24,12 @@ class Endpoint:
 
     node: RosNode
     entity: Entity
+    #: The node's fixture scope (:func:`.fixtures.node_scope`); ``None`` for production code.
+    scope: str | None = None
+
+    def sees(self, other: Endpoint) -> bool:
+        """Whether ``other`` can be this end's partner: production and test fixtures do not mix."""
+        return sees(self.scope, other.scope, other.node.location.path)
 
     @property
     def sort_key(self) -> tuple:
@@ -50,26 +60,34 @@ class EndpointIndex:
     """Named endpoints by (kind, resolved name), plus what is known of the unresolved ones."""
 
     by_name: dict[tuple[str, str], list[Endpoint]] = field(default_factory=dict)
-    #: How many distinct nodes use each (kind, name); nodes of one fully qualified name count once.
-    node_counts: dict[tuple[str, str], int] = field(default_factory=dict)
     #: The message types (``None`` = unknown) of the unresolved endpoints, by kind.
     unresolved_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
+    #: The same, of production nodes only: a fixture's unknown cannot fill a production gap.
+    unresolved_production_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
+    #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
+    _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, graph: RosGraph) -> EndpointIndex:
         by_name: dict[tuple[str, str], list[Endpoint]] = defaultdict(list)
         unresolved_types: dict[str, set[str | None]] = defaultdict(set)
+        unresolved_production: dict[str, set[str | None]] = defaultdict(set)
+        scopes: dict[int, str | None] = {}
         for node, entity in graph.entities():
             if entity.kind not in NAMED_KINDS:
                 continue
+            if id(node) not in scopes:
+                scopes[id(node)] = node_scope(node)
+            scope = scopes[id(node)]
             if entity.name is None:
                 unresolved_types[entity.kind].add(entity.type)
+                if scope is None:
+                    unresolved_production[entity.kind].add(entity.type)
             else:
-                by_name[(entity.kind, entity.name)].append(Endpoint(node, entity))
+                by_name[(entity.kind, entity.name)].append(Endpoint(node, entity, scope))
         for endpoints in by_name.values():
             endpoints.sort(key=lambda ep: ep.sort_key)
-        node_counts = {key: len({_node_key(ep.node) for ep in eps}) for key, eps in by_name.items()}
-        return cls(dict(by_name), node_counts, {kind: frozenset(types) for kind, types in unresolved_types.items()})
+        return cls(dict(by_name), _frozen(unresolved_types), _frozen(unresolved_production))
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         """All resolved endpoints of one kind, in source order."""
@@ -103,11 +121,25 @@ class EndpointIndex:
     def peers(self, endpoint: Endpoint) -> list[Endpoint]:
         """The endpoints at the other end of ``endpoint``'s name (subscriptions of a publisher's topic, ...)."""
         name = endpoint.entity.name
-        return [] if name is None else self.using(PEER_KIND[endpoint.entity.kind], name)
+        if name is None:
+            return []
+        return [p for p in self.using(PEER_KIND[endpoint.entity.kind], name) if endpoint.sees(p)]
+
+    def same_role_nodes(self, endpoint: Endpoint) -> int:
+        """How many distinct nodes ``endpoint`` can run with use its name in its role (itself included).
+
+        Nodes of one fully qualified name count once (see :func:`_node_key`).
+        """
+        key = (endpoint.entity.kind, endpoint.entity.name or "", endpoint.scope)
+        if key not in self._role_counts:
+            users = self.using(key[0], key[1])
+            self._role_counts[key] = len({_node_key(ep.node) for ep in users if endpoint.sees(ep)})
+        return self._role_counts[key]
 
     def unresolved_peer_may_match(self, endpoint: Endpoint) -> bool:
         """Whether an unresolved-name peer exists whose type does not rule out being ``endpoint``'s other end."""
-        types = self.unresolved_types.get(PEER_KIND[endpoint.entity.kind], frozenset())
+        unresolved = self.unresolved_types if endpoint.scope is not None else self.unresolved_production_types
+        types = unresolved.get(PEER_KIND[endpoint.entity.kind], frozenset())
         own_type = endpoint.entity.type
         return bool(types) and (own_type is None or None in types or own_type in types)
 
@@ -119,12 +151,19 @@ class EndpointIndex:
         workspace's own data flow or only the world outside.
         """
         wired: set[int] = set()
-        peer_kind = PEER_KIND[kind]
         for (k, name), endpoints in self.by_name.items():
             if k != kind or name in exempt:
                 continue
-            peer_nodes = {id(p.node) for p in self.using(peer_kind, name)}
+            peer_nodes_by_scope: dict[str | None, set[int]] = {}
             for ep in endpoints:
+                # Ends of one scope see the same peers: compute them once per scope.
+                if ep.scope not in peer_nodes_by_scope:
+                    peer_nodes_by_scope[ep.scope] = {id(p.node) for p in self.peers(ep)}
+                peer_nodes = peer_nodes_by_scope[ep.scope]
                 if len(peer_nodes) > 1 or (peer_nodes and id(ep.node) not in peer_nodes):
                     wired.add(id(ep.node))
         return frozenset(wired)
+
+
+def _frozen(types: dict[str, set[str | None]]) -> dict[str, frozenset[str | None]]:
+    return {kind: frozenset(found) for kind, found in types.items()}

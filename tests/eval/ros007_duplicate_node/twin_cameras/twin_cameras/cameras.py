@@ -6,7 +6,7 @@ from sensor_msgs.msg import Image
 
 def main():
     rclpy.init()
-    left = rclpy.create_node('camera')
+    left = rclpy.create_node('camera')  # ROS007
     right = rclpy.create_node('camera')  # ROS007
     left.create_publisher(Image, 'left/image', 10)
     right.create_publisher(Image, 'right/image', 10)

@@ -1,0 +1,3 @@
+"""Topic names shared by the demo's nodes."""
+CHATTER = 'chatter'
+RELAYED = 'chatter_relayed'
