@@ -261,8 +261,9 @@ def test_parameter_file_linked_to_a_secret_does_not_leak(ws: Path, tmp_path: Pat
 
 def test_many_long_topic_names_stay_cheap(ws: Path) -> None:
     long = "/".join(["very_long_namespace_segment"] * 7)  # about 200 characters: valid, but long
-    pubs = "".join(f"        self.create_publisher(String, '/{long}/pub{i}', 10)\n" for i in range(200))
-    subs = "".join(f"        self.create_subscription(String, '/{long}/sub{i}', self.cb, 10)\n" for i in range(200))
+    # each subscription a transposition typo of its publisher: every one has a near miss to find
+    pubs = "".join(f"        self.create_publisher(String, '/{long}/status{i}', 10)\n" for i in range(200))
+    subs = "".join(f"        self.create_subscription(String, '/{long}/statsu{i}', self.cb, 10)\n" for i in range(200))
     _write(ws, f"{CHAT}/chat_pkg/wide.py", f"""\
 import rclpy
 from rclpy.node import Node
@@ -272,7 +273,12 @@ from std_msgs.msg import String
 class Wide(Node):
     def __init__(self):
         super().__init__('wide')
-{pubs}{subs}
+{pubs}
+
+class Narrow(Node):
+    def __init__(self):
+        super().__init__('narrow')
+{subs}
     def cb(self, msg):
         pass
 
