@@ -18,6 +18,7 @@ from ..absint.values import (BoundMethod, ClassAtom, Const, Extern, ExternBound,
                              Coll, Value)
 from . import names
 from .model import Entity, Location, RosGraph, RosNode
+from .usage import build_usage
 
 #: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
 ENTITY_KINDS: dict[str, tuple[str, str]] = {
@@ -143,7 +144,16 @@ class GraphBuilder:
             node.entities = [bucket[k] for k in sorted(bucket)]
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
+        graph.usage = build_usage(self.analysis, self._node_labels())
         return graph
+
+    def _node_labels(self) -> dict[str, str]:
+        """Node object site -> how messages name it (its name(s), or its class)."""
+        out = {}
+        for site, nodes in self.by_object.items():
+            shown = sorted({n.fqn or n.name or n.cls or "?" for n in nodes})
+            out[site] = " or ".join(f"'{s}'" for s in shown)
+        return out
 
     # -- nodes ------------------------------------------------------------------------------
     def _add_node(self, eff: Effect) -> None:

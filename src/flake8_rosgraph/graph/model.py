@@ -103,6 +103,9 @@ class RosGraph:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     #: The launch systems found in the workspace (``flake8_rosgraph.launch.System``).
     systems: list[Any] = field(default_factory=list)
+    #: How the code uses rclpy beyond the graph (``flake8_rosgraph.graph.usage.UsageFacts``:
+    #: callbacks, blocking calls, executors, parameter uses); ``None`` when not extracted.
+    usage: Any = None
 
     def entities(self, kind: str | None = None):
         """Yield ``(node, entity)`` pairs, optionally of one kind."""

@@ -23,6 +23,7 @@ from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
+from .ros101_blocking_call_in_callback import BlockingCallInCallback
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -39,6 +40,7 @@ RULES: tuple[Rule, ...] = (
     IneffectiveRemap(),
     InvalidLaunchName(),
     UnknownParameter(),
+    BlockingCallInCallback(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
