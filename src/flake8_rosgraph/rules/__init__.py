@@ -24,6 +24,7 @@ from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
 from .ros101_blocking_call_in_callback import BlockingCallInCallback
+from .ros102_undeclared_parameter import UndeclaredParameter
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -41,6 +42,7 @@ RULES: tuple[Rule, ...] = (
     InvalidLaunchName(),
     UnknownParameter(),
     BlockingCallInCallback(),
+    UndeclaredParameter(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
