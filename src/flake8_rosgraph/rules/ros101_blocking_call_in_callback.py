@@ -67,6 +67,15 @@ class BlockingCallInCallback(Rule):
     cannot do until the callback returns — the node hangs for good (or until the
     timeout). Spinning the executor that is running the callback re-enters it.
 
+    ## Known problems
+    Which executor spins a node is read from `rclpy.spin(node)`,
+    `executor.add_node(node)` and the like in the workspace; a node spun
+    elsewhere counts as unknown, and then only calls that deadlock under any
+    executor (a client in the caller's own exclusive group) are reported.
+    `Future.result()` is not reported: in rclpy it never blocks (it returns
+    `None` before the future is done). A chain is followed through the calls
+    the analysis resolves; calls through unknown objects are not followed.
+
     ## Example
     ```python
     def on_update(self, msg):
@@ -82,15 +91,6 @@ class BlockingCallInCallback(Rule):
     ```
     or give the client its own callback group and spin the node with a
     `MultiThreadedExecutor`.
-
-    ## Known problems
-    Which executor spins a node is read from `rclpy.spin(node)`,
-    `executor.add_node(node)` and the like in the workspace; a node spun
-    elsewhere counts as unknown, and then only calls that deadlock under any
-    executor (a client in the caller's own exclusive group) are reported.
-    `Future.result()` is not reported: in rclpy it never blocks (it returns
-    `None` before the future is done). A chain is followed through the calls
-    the analysis resolves; calls through unknown objects are not followed.
 
     ## Options
     None.

@@ -35,6 +35,16 @@ class UndeclaredParameter(Rule):
     forever), and `ParameterAlreadyDeclaredException` when a name is declared
     twice. Both surface at run time, often in a rarely taken branch.
 
+    ## Known problems
+    Nodes created with `allow_undeclared_parameters=True` or
+    `automatically_declare_parameters_from_overrides=True` (or an unknown value
+    for either), and nodes that declare a parameter whose name the analysis
+    cannot determine, are skipped; so is a use on an object that is not known to
+    be a node, or a name that is not known. Parameters rclpy declares itself
+    (`use_sim_time`, `qos_overrides.*`, ...) count as declared. A declaration
+    repeated by a loop is not detected, only two declarations on one path; one
+    inside a `try` or an `if` is never counted as a repeat.
+
     ## Example
     ```python
     class Driver(Node):
@@ -53,16 +63,6 @@ class UndeclaredParameter(Rule):
             self.declare_parameter('baudrate', 115200)
             self.baud = self.get_parameter('baudrate').value
     ```
-
-    ## Known problems
-    Nodes created with `allow_undeclared_parameters=True` or
-    `automatically_declare_parameters_from_overrides=True` (or an unknown value
-    for either), and nodes that declare a parameter whose name the analysis
-    cannot determine, are skipped; so is a use on an object that is not known to
-    be a node, or a name that is not known. Parameters rclpy declares itself
-    (`use_sim_time`, `qos_overrides.*`, ...) count as declared. A declaration
-    repeated by a loop is not detected, only two declarations on one path; one
-    inside a `try` or an `if` is never counted as a repeat.
 
     ## Options
     None.
