@@ -44,7 +44,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node", "name", "names", "parameters", "how"}),
     # read by the misuse facts (flake8_rosgraph.graph.facts) for ROS101-ROS106
-    "callback": frozenset({"function", "role", "passes", "returns", "node", "group", "executor"}),
+    "callback": frozenset({"function", "role", "passes", "annotated", "returns", "node", "group",
+                          "executor"}),
     "spin": frozenset({"node", "executor"}),
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),

@@ -47,6 +47,7 @@ class Signature:
     required: int
     maximum: int | None            # None: ``*args``
     required_keywords: tuple[str, ...]
+    annotated: bool = False        # some parameter has a type annotation
 
     def accepts(self, count: int) -> bool:
         return not self.required_keywords and self.required <= count and \
@@ -58,7 +59,9 @@ class Callback:
     """A function some library call will call back (registration × function)."""
 
     role: str                      # "timer callback", "service callback", …
-    passes: int | None             # positional arguments the library passes
+    passes: tuple[int, ...] | None  # how many positional arguments the library may pass
+    #: The library fills an annotated parameter by its type (rclpy's ``TimerInfo``).
+    by_annotation: bool
     must_return: str | None        # what it must return ("the response"), if anything
     on_executor: bool              # run by an executor (not synchronously by the library)
     registration: Location
@@ -214,7 +217,8 @@ class UsageBuilder:
             if eff.kind != "callback":
                 continue
             nodes = _obj_sites(eff.arg("node")) or frozenset()
-            passes = _single_const(eff.arg("passes"))
+            passes = _counts(eff.arg("passes"))
+            by_annotation = eff.arg("annotated").consts() == [True]
             returns = _single_const(eff.arg("returns"))
             on_executor = eff.arg("executor").consts() != [False]
             group = self._group(eff.arg("group"), nodes) if "group" in dict(eff.args) else None
@@ -225,7 +229,7 @@ class UsageBuilder:
                 func = self.program.functions[atom.fid]
                 receiver = atom.receiver if isinstance(atom, BoundMethod) else None
                 tasks = self._tasks(atom.fid, receiver)
-                cb = Callback(role, passes if isinstance(passes, int) else None,
+                cb = Callback(role, passes, by_annotation,
                               returns if isinstance(returns, str) else None, on_executor,
                               _loc(eff), func.qualname, _definition(func), nodes, group,
                               self._signature(func, receiver is not None),
@@ -267,7 +271,9 @@ class UsageBuilder:
         count = len(positional) - drop
         with_default = min(len(args.defaults), count)
         required_kw = tuple(a.arg for a, d in zip(args.kwonlyargs, args.kw_defaults) if d is None)
-        return Signature(count - with_default, None if args.vararg else count, required_kw)
+        annotated = any(a.annotation is not None for a in positional[drop:] + args.kwonlyargs)
+        return Signature(count - with_default, None if args.vararg else count, required_kw,
+                         annotated)
 
     def _partial_functions(self) -> frozenset[int]:
         """Functions ever wrapped by a library call that pre-binds arguments
@@ -546,6 +552,19 @@ class UsageBuilder:
 def _definition(func: Function) -> Location:
     node = func.node
     return Location(func.module.path, getattr(node, "lineno", 1), func.module.column(node))
+
+
+def _counts(value: Value) -> tuple[int, ...] | None:
+    """An argument count, or a sequence of alternative counts, as a tuple (``None``: unknown)."""
+    consts = value.consts()
+    if consts is not None and len(consts) == 1 and isinstance(consts[0], int):
+        return (consts[0],)
+    found = [a for a in value] if not value.is_top else []
+    if len(found) == 1 and isinstance(found[0], Seq):
+        counts = [_single_const(v) for v in found[0].items]
+        if counts and all(isinstance(c, int) and not isinstance(c, bool) for c in counts):
+            return tuple(counts)
+    return None
 
 
 def _callback_order(cb: Callback) -> tuple:

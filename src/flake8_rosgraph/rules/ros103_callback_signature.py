@@ -32,6 +32,8 @@ class CallbackSignature(Rule):
     request or goal handle, a future's done callback the future, a
     set-parameters callback the parameter list. Bound methods do not count
     `self`; parameters with defaults and `*args` make a signature acceptable.
+    A subscription callback may also take the message info (rclpy ≥ Iron), a
+    timer callback a parameter annotated `TimerInfo` (rclpy ≥ Jazzy).
     Also checks that callbacks whose result rclpy uses (service callbacks: the
     response; set-parameters callbacks: a `SetParametersResult`) return a value
     on every path.
@@ -45,7 +47,10 @@ class CallbackSignature(Rule):
 
     ## Known problems
     Functions wrapped by a decorator or `functools.partial` anywhere, and
-    generators, are not judged (their signature may not be what is called).
+    generators, are not judged (their signature may not be what is called);
+    neither is a timer callback with annotated parameters (rclpy passes
+    `TimerInfo` by annotation). A subscription callback taking two arguments is
+    accepted although rclpy before Iron passes only the message.
     Callable objects (instances with `__call__`) are not checked.
 
     ## Example
@@ -88,13 +93,16 @@ class CallbackSignature(Rule):
         missing_return: dict[tuple, Callback] = {}
         for cb in usage.callbacks:
             sig = cb.signature
-            if sig is not None and cb.passes is not None and not sig.accepts(cb.passes):
-                given = f"{cb.passes} argument" + ("" if cb.passes == 1 else "s")
+            if sig is None or cb.passes is None or (cb.by_annotation and sig.annotated):
+                continue
+            if not any(sig.accepts(n) for n in cb.passes):
+                given = " or ".join(map(str, cb.passes)) + " argument" + \
+                    ("" if cb.passes == (1,) else "s")
                 yield Finding(cb.registration, self.code,
                               f"{cb.role} `{cb.function}` {_accepted(sig)}, but rclpy passes "
                               f"{given}: TypeError when it is called",
                               ((cb.definition, f"`{cb.function}` defined here"),))
-            if cb.must_return and cb.may_return_none and sig is not None:
+            elif cb.must_return and cb.may_return_none:
                 missing_return.setdefault((cb.definition, cb.must_return), cb)
         for (definition, what), cb in sorted(missing_return.items()):
             yield Finding(definition, self.code,
