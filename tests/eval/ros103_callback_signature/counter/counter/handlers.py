@@ -35,3 +35,7 @@ class ResetHandlers:
 
 def on_topic(node, topic, msg):
     node.last = (topic, msg)
+
+
+def log_reset(node, request, response):
+    node.get_logger().info(f'reset: {request.data} -> {response.success}')

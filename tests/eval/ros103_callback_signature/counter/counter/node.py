@@ -5,7 +5,7 @@ from rclpy.node import Node
 from std_msgs.msg import Int32
 from std_srvs.srv import SetBool, Trigger
 
-from counter.handlers import ResetHandlers, on_topic
+from counter.handlers import ResetHandlers, log_reset, on_topic
 
 
 class Counter(ResetHandlers, Node):
@@ -21,7 +21,7 @@ class Counter(ResetHandlers, Node):
         self.create_timer(2.0, self.on_anything)
         self.create_subscription(Int32, 'count', self.on_message, 10)
         self.create_subscription(Int32, 'count_all', self.on_anything, 10)
-        self.create_subscription(Int32, 'reset_request', on_topic, 10)  # ROS103
+        self.create_subscription(Int32, 'reset_request', log_reset, 10)  # ROS103
         self.create_subscription(Int32, 'tick', lambda: self.on_tick(None), 10)  # ROS103
         self.create_subscription(Int32, 'other', partial(on_topic, self, 'other'), 10)
         self.client = self.create_client(Trigger, 'ping')
