@@ -186,6 +186,17 @@ def test_shipped_bases_and_via_classes_are_modelled():
     assert problems == []
 
 
+def test_blocking_calls_are_modelled_with_why_and_duration():
+    library = load_library(SHIPPED)
+    assert library.method("rclpy.client.Client", "call").blocking
+    assert library.method("rclpy.executors.MultiThreadedExecutor", "spin").blocking
+    assert library.functions["rclpy.spin_until_future_complete"].blocking
+    assert library.functions["time.sleep"].blocks_for == "secs"
+    assert library.method("rclpy.client.Client", "call_async").blocking is None
+    # rclpy's Future.result() returns None before the future is done: it never blocks.
+    assert library.method("rclpy.task.Future", "result").blocking is None
+
+
 def test_consistency_check_catches_a_misspelt_model():
     # The consistency test above is only worth something if it can fail.
     library = load_library([("typo.toml", """
@@ -254,6 +265,15 @@ BROKEN: dict[str, tuple[str, str]] = {
                                "constants.'acme.X': expected { value = … }"),
     "alias to a non-string": ('[aliases]\n"acme.A" = 3\n', "aliases.'acme.A': expected a string"),
     "section not a table": ("functions = 3\n", "[functions] must be a table"),
+    "blocking not a string": ('[functions."acme.wait"]\nblocking = true\n',
+                              "functions.'acme.wait'.blocking: expected a non-empty string"),
+    "blocking empty": ('[functions."acme.wait"]\nblocking = " "\n',
+                       "functions.'acme.wait'.blocking: expected a non-empty string"),
+    "blocks_for without blocking": ('[functions."acme.wait"]\nparams = "secs"\nblocks_for = "secs"\n',
+                                    "functions.'acme.wait'.blocks_for: only meaningful with blocking"),
+    "blocks_for not a parameter": ('[functions."acme.wait"]\nparams = "secs"\nblocking = "sleeps"\n'
+                                   'blocks_for = "seconds"\n',
+                                   "functions.'acme.wait'.blocks_for: 'seconds' is not a parameter"),
 }
 
 #: Broken files that once escaped the loader's reporting (kept as regressions).

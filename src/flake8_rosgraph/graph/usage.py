@@ -139,6 +139,7 @@ class PeriodArgument:
     location: Location
     what: str                      # "timer period" or "rate frequency"
     values: tuple | None           # every possible value, None when unknown
+    conditional: bool              # created on some paths only (a test may exclude values)
 
 
 @dataclass
@@ -545,7 +546,8 @@ class UsageBuilder:
             else:
                 continue
             consts = value.consts() if not value.soft else None
-            out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None))
+            out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None,
+                                      eff.conditional))
         return out
 
 

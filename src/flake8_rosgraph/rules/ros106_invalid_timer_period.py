@@ -51,7 +51,9 @@ class InvalidTimerPeriod(Rule):
     Only values the analysis knows are checked; a value that is only a
     default the environment can override (a ROS parameter, a command-line
     option) is not judged. Every possible value is checked, so a value that is
-    invalid on one branch only is reported too.
+    invalid on one branch only is reported too — unless the timer is created on
+    some paths only and some of its values are valid: the analysis does not
+    narrow a value by the test that guards the creation (`if period > 0:`).
 
     ## Example
     ```python
@@ -80,7 +82,9 @@ class InvalidTimerPeriod(Rule):
         if usage is None:
             return
         for arg in usage.periods:
-            for value in sorted(arg.values or (), key=repr):
-                problem = _problem(arg.what, value)
-                if problem is not None:
-                    yield Finding(arg.location, self.code, f"{arg.what} {problem}")
+            values = sorted(arg.values or (), key=repr)
+            problems = [p for p in (_problem(arg.what, v) for v in values) if p is not None]
+            if arg.conditional and len(problems) < len(values):
+                continue  # the test that guards the creation may be what excludes the bad value
+            for problem in problems:
+                yield Finding(arg.location, self.code, f"{arg.what} {problem}")
