@@ -62,6 +62,7 @@ def judged_graph(graph: RosGraph, systems: list[System]) -> RosGraph:
     judged = apply_systems(graph, systems, placeholders=False)
     judged.diagnostics = list(graph.diagnostics)
     judged.systems = systems
+    judged.usage = graph.usage
     return judged
 
 
