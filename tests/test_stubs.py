@@ -50,6 +50,9 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),
     "rate": frozenset({"node", "frequency", "object"}),
+    "context_init": frozenset({"context"}),
+    "context_shutdown": frozenset({"context"}),
+    "node_destroy": frozenset({"node"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
     "launch_node": frozenset({"package", "executable"}),
     "launch_description": frozenset({"description"}),
@@ -67,6 +70,9 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),
     "rate": frozenset({"node", "frequency"}),
+    "context_init": frozenset(),
+    "context_shutdown": frozenset(),
+    "node_destroy": frozenset({"node"}),
     "launch_node": frozenset(),
     "launch_description": frozenset(),
 }

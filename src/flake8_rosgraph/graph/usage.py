@@ -22,6 +22,9 @@ from ..absint.program import Function
 from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value
 from .model import Location
 
+#: Effects that create an entity on their ``node``: they fail on a destroyed node.
+ENTITY_EFFECTS = frozenset({"publisher", "subscription", "service", "client", "action_server",
+                            "action_client", "timer", "rate", "parameter", "parameters"})
 #: Tasks one callback's search for blocking calls may visit.
 MAX_REACHED_TASKS = 2000
 #: Executor classes whose threads run callbacks one at a time / concurrently.
@@ -142,6 +145,16 @@ class PeriodArgument:
     conditional: bool              # created on some paths only (a test may exclude values)
 
 
+@dataclass(frozen=True)
+class OutOfOrder:
+    """A call that runs, in one body, after (or before) the call it depends on."""
+
+    location: Location
+    what: str                      # "node created", "node spun", "entity created on node 'x'"
+    problem: str                   # "before rclpy.init()", "after rclpy.shutdown()", …
+    other: Location                # the init / shutdown / destroy_node call
+
+
 @dataclass
 class UsageFacts:
     callbacks: list[Callback] = field(default_factory=list)
@@ -150,6 +163,7 @@ class UsageFacts:
     parameter_uses: list[ParameterUse] = field(default_factory=list)
     redeclarations: list[Redeclaration] = field(default_factory=list)
     periods: list[PeriodArgument] = field(default_factory=list)
+    out_of_order: list[OutOfOrder] = field(default_factory=list)
 
 
 def _loc(item: Effect | CallSite) -> Location:
@@ -209,6 +223,7 @@ class UsageBuilder:
         facts.parameter_uses = self._parameter_uses()
         facts.redeclarations = self._redeclarations()
         facts.periods = self._periods()
+        facts.out_of_order = self._out_of_order()
         return facts
 
     # -- callbacks ---------------------------------------------------------------------
@@ -534,6 +549,84 @@ class UsageBuilder:
         active.discard(task)
         memo[task] = first
         return first
+
+    # -- lifecycle order ---------------------------------------------------------------
+    def _out_of_order(self) -> list[OutOfOrder]:
+        """In one body: a node created before an ``rclpy.init()`` that always follows it, a node
+        created after an ``rclpy.shutdown()`` that always precedes it (with no init in between),
+        an entity created on a node after its ``destroy_node()``.
+        Only calls on every path (outside ``try``) order a body; custom contexts are skipped."""
+        memo: dict[tuple, bool] = {}
+        entity_memo: dict[tuple, frozenset[str]] = {}
+        out: dict[Location, OutOfOrder] = {}
+        for task in self.calls.tasks():
+            sites = self.calls.sites(task)
+            kinds = [{e.kind for e in s.effects} for s in sites]
+            if not sites or any(e.kind in ("context_init", "context_shutdown") and
+                   e.arg("context").consts() != [None] for s in sites for e in s.effects):
+                continue
+            fixed = [not s.conditional and not s.guarded for s in sites]
+            inits = [i for i, k in enumerate(kinds) if "context_init" in k and fixed[i]]
+            shutdowns = [i for i, k in enumerate(kinds) if "context_shutdown" in k and fixed[i]]
+            any_init = [i for i, k in enumerate(kinds) if "context_init" in k]
+            for i, site in enumerate(sites):
+                creates = self._creates_node(site, memo)
+                if creates and fixed[i] and inits and inits[0] > i and \
+                        not any(j < i for j in any_init):
+                    out.setdefault(_loc(site), OutOfOrder(
+                        _loc(site), "node created", "before rclpy.init()", _loc(sites[inits[0]])))
+                earlier = [d for d in shutdowns if d < i and not any(d < j < i for j in any_init)]
+                if creates and earlier:
+                    out.setdefault(_loc(site), OutOfOrder(
+                        _loc(site), "node created", "after rclpy.shutdown()",
+                        _loc(sites[earlier[0]])))
+            self._after_destroy(sites, fixed, out, entity_memo)
+        return [out[k] for k in sorted(out)]
+
+    def _after_destroy(self, sites, fixed, out, memo) -> None:
+        destroyed: dict[str, int] = {}
+        for i, site in enumerate(sites):
+            for node in sorted(self._creates_on(site, memo) & destroyed.keys()):
+                label = self.node_labels.get(node, "?")
+                out.setdefault(_loc(site), OutOfOrder(
+                    _loc(site), f"`{site.text()}()` creates an entity on node {label}",
+                    "after its destroy_node()", _loc(sites[destroyed[node]])))
+            if fixed[i]:
+                for eff in site.effects:
+                    nodes = _obj_sites(eff.arg("node")) if eff.kind == "node_destroy" else None
+                    if nodes is not None and len(nodes) == 1:
+                        destroyed.setdefault(next(iter(nodes)), i)
+
+    def _creates_on(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
+        """The nodes the call creates an entity on, on every path through it."""
+        if site.callee[0] == "lib":
+            out = set()
+            for eff in site.effects:
+                nodes = _obj_sites(eff.arg("node")) if eff.kind in ENTITY_EFFECTS else None
+                if nodes is not None and len(nodes) == 1:
+                    out |= nodes
+            return frozenset(out)
+        task = site.callee[1]
+        if task not in memo:
+            memo[task] = frozenset()  # recursion: nothing known
+            memo[task] = frozenset().union(*(
+                self._creates_on(s, memo, depth + 1) for s in self.calls.sites(task)
+                if not s.conditional and not s.guarded)) if depth < 8 else frozenset()
+        return memo[task]
+
+    def _creates_node(self, site: CallSite, memo: dict, depth: int = 0) -> bool:
+        """The call creates a node on every path (a modelled node constructor or factory, or
+        workspace code that always calls one)."""
+        if site.callee[0] == "lib":
+            return any(e.kind == "node" for e in site.effects)
+        task = site.callee[1]
+        if task in memo:
+            return memo[task]
+        memo[task] = False  # recursion: not known to create
+        memo[task] = depth < 8 and any(
+            not s.conditional and not s.guarded and self._creates_node(s, memo, depth + 1)
+            for s in self.calls.sites(task))
+        return memo[task]
 
     # -- periods -----------------------------------------------------------------------
     def _periods(self) -> list[PeriodArgument]:

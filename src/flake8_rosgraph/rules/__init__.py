@@ -22,6 +22,7 @@ from .ros010_unresolved_name import UnresolvedName
 from .ros101_blocking_call_in_callback import BlockingCallInCallback
 from .ros102_undeclared_parameter import UndeclaredParameter
 from .ros103_callback_signature import CallbackSignature
+from .ros105_lifecycle_order import LifecycleOrder
 from .ros106_invalid_timer_period import InvalidTimerPeriod
 from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
@@ -42,6 +43,7 @@ RULES: tuple[Rule, ...] = (
     BlockingCallInCallback(),
     UndeclaredParameter(),
     CallbackSignature(),
+    LifecycleOrder(),
     InvalidTimerPeriod(),
     UnknownExecutable(),
     IneffectiveRemap(),
