@@ -69,6 +69,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
+        diagnostics.extend(graph.diagnostics)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]

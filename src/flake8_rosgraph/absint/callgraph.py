@@ -56,14 +56,18 @@ class CallGraph:
 
     def __init__(self, calls: dict[tuple, dict[tuple, CallSite]]) -> None:
         self._calls = calls
+        self._sorted: dict[tuple, list[CallSite]] = {}
 
     def tasks(self) -> Iterator[tuple]:
         return iter(sorted(self._calls, key=repr))
 
     def sites(self, task: tuple) -> list[CallSite]:
         """The calls ``task`` makes, in source order."""
-        return sorted(self._calls.get(task, {}).values(),
-                      key=lambda s: (s.line, s.column, repr(s.callee)))
+        known = self._sorted.get(task)
+        if known is None:
+            known = self._sorted[task] = sorted(self._calls.get(task, {}).values(),
+                                                key=lambda s: (s.line, s.column, repr(s.callee)))
+        return known
 
     def tasks_of(self, fid: int) -> list[tuple]:
         """Every analysed task of function ``fid`` (one per context)."""

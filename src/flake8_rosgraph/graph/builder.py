@@ -17,7 +17,7 @@ from ..absint.engine import Analysis, Effect
 from ..absint.values import (BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record, Seq,
                              Coll, Value)
 from . import names
-from .model import Entity, Location, RosGraph, RosNode
+from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .usage import build_usage
 
 #: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
@@ -144,7 +144,11 @@ class GraphBuilder:
             node.entities = [bucket[k] for k in sorted(bucket)]
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
-        graph.usage = build_usage(self.analysis, self._node_labels())
+        try:
+            graph.usage = build_usage(self.analysis, self._node_labels())
+        except Exception as exc:  # a defect there must cost the misuse rules only, not the graph
+            graph.diagnostics.append(Diagnostic("", 0, "rclpy usage facts not extracted: internal "
+                                                       f"error: {type(exc).__name__}: {exc}", "error"))
         return graph
 
     def _node_labels(self) -> dict[str, str]:
