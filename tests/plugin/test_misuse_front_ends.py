@@ -2,7 +2,6 @@
 eval package: the usage facts survive the launch-aware graph the front ends judge."""
 from __future__ import annotations
 
-import argparse
 import json
 import shutil
 from pathlib import Path
@@ -11,14 +10,9 @@ import pytest
 
 from flake8_rosgraph import check_cli
 
+from .test_check_cli import check
+
 CASE = Path(__file__).resolve().parents[1] / "eval" / "ros101_blocking_call"
-
-
-def check(argv: list[str]) -> int:
-    parser = argparse.ArgumentParser(prog="flake8-rosgraph")
-    check_cli.add_parser(parser.add_subparsers(dest="command"))
-    args = parser.parse_args(["check", *argv])
-    return args.run(args)
 
 
 @pytest.fixture
