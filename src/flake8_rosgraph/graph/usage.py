@@ -271,14 +271,9 @@ class UsageBuilder:
         node = func.node
         if func.fid in self.partial_fids or func.is_generator:
             return None
-        if not hasattr(node, "decorator_list"):  # a lambda
-            decorators = []
-        else:
-            decorators = [d for d in node.decorator_list
-                          if getattr(d, "id", getattr(d, "attr", None)) not in
-                          ("staticmethod", "classmethod")]
-        if decorators:
-            return None
+        known = 0 if func.kind == "function" else 1  # staticmethod, classmethod
+        if len(getattr(node, "decorator_list", ())) > known:
+            return None  # a decorator may wrap it in another signature
         args = node.args
         positional = args.posonlyargs + args.args
         drop = 1 if bound else 0
@@ -562,8 +557,7 @@ class UsageBuilder:
         for task in self.calls.tasks():
             sites = self.calls.sites(task)
             kinds = [{e.kind for e in s.effects} for s in sites]
-            if not sites or any(e.kind in ("context_init", "context_shutdown") and
-                   e.arg("context").consts() != [None] for s in sites for e in s.effects):
+            if not sites or any(_custom_context(e) for s in sites for e in s.effects):
                 continue
             fixed = [not s.conditional and not s.guarded for s in sites]
             inits = [i for i, k in enumerate(kinds) if "context_init" in k and fixed[i]]
@@ -642,6 +636,11 @@ class UsageBuilder:
             out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None,
                                       eff.conditional))
         return out
+
+
+def _custom_context(eff: Effect) -> bool:
+    """An init/shutdown of a context other than the default one."""
+    return eff.kind in ("context_init", "context_shutdown") and eff.arg("context").consts() != [None]
 
 
 def _definition(func: Function) -> Location:
