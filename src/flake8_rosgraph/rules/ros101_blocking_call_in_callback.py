@@ -23,7 +23,9 @@ def deadlocks(call: BlockingCall) -> str | None:
         return None
     if call.kind == "spin":
         if call.same_node is True:
-            return "that executor is the one already running this callback (deadlock or RuntimeError)"
+            return ("that executor is already running this callback: the spin re-enters it, and "
+                    "nothing of this callback's group runs until it returns (deadlock when it "
+                    "waits for one of them)")
         return None
     if call.kind == "sleep":
         if call.seconds and max(call.seconds) >= LONG_SLEEP_S and call.executor == "single":
