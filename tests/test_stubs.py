@@ -45,7 +45,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "parameter_use": frozenset({"node", "name", "names", "parameters", "how"}),
     # read by the misuse facts (flake8_rosgraph.graph.facts) for ROS101-ROS106
     "callback": frozenset({"function", "role", "passes", "annotated", "returns", "node", "group",
-                          "executor"}),
+                          "executor", "entity", "future"}),
+    "future": frozenset({"future", "entity"}),
     "spin": frozenset({"node", "executor"}),
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),
@@ -66,6 +67,7 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node"}),
     "callback": frozenset({"function", "role", "passes"}),
+    "future": frozenset({"future", "entity"}),
     "spin": frozenset(),
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),

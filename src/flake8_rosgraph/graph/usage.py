@@ -227,12 +227,38 @@ class UsageBuilder:
         return facts
 
     # -- callbacks ---------------------------------------------------------------------
+    def _futures(self) -> dict[str, frozenset[str]]:
+        """Future object site -> the entity objects (clients) whose response completes it."""
+        out: dict[str, set[str]] = {}
+        for eff in self.effects:
+            if eff.kind == "future":
+                for site in _obj_sites(eff.arg("future")) or ():
+                    out.setdefault(site, set()).update(_obj_sites(eff.arg("entity")) or ())
+        return {k: frozenset(v) for k, v in out.items()}
+
+    def _owner_nodes(self, eff: Effect, futures: dict[str, frozenset[str]]) -> frozenset[str]:
+        """The nodes whose executor runs a callback: its ``node``, or the node of the entity
+        (client, action client) it belongs to — directly or through the future it completes."""
+        args = dict(eff.args)
+        if "node" in args:
+            return _obj_sites(eff.arg("node")) or frozenset()
+        entities = _obj_sites(eff.arg("entity")) if "entity" in args else None
+        if "future" in args:
+            found = _obj_sites(eff.arg("future"))
+            entities = frozenset().union(*(futures.get(f, frozenset()) for f in found)) \
+                if found and all(f in futures for f in found) else None
+        if not entities or any(e not in self.entities for e in entities):
+            return frozenset()
+        nodes = [self.entities[e][0] for e in sorted(entities)]
+        return nodes[0] if all(n == nodes[0] for n in nodes) else frozenset()
+
     def _callbacks(self) -> list[Callback]:
         out: dict[tuple, Callback] = {}
+        futures = self._futures()
         for eff in self.effects:
             if eff.kind != "callback":
                 continue
-            nodes = _obj_sites(eff.arg("node")) or frozenset()
+            nodes = self._owner_nodes(eff, futures)
             passes = _counts(eff.arg("passes"))
             by_annotation = eff.arg("annotated").consts() == [True]
             returns = _single_const(eff.arg("returns"))

@@ -64,6 +64,21 @@ class Relay(Node):
         self.private_executor.spin_once(timeout_sec=0.1)
 
 
+class ChainedRequests(Node):
+    """A done callback runs on the executor that spins the client's node."""
+
+    def __init__(self):
+        super().__init__('chained_requests')
+        self.map_client = self.create_client(GetMap, 'map_server/map')
+        self.create_timer(1.0, self.on_timer)
+
+    def on_timer(self):
+        self.map_client.call_async(GetMap.Request()).add_done_callback(self.on_first)
+
+    def on_first(self, future):
+        self.map_client.call(GetMap.Request())  # ROS101
+
+
 def main():
     rclpy.init()
     executor = MultiThreadedExecutor()
@@ -73,3 +88,4 @@ def main():
     rclpy.spin(LambdaSync())
     rclpy.spin(single)
     rclpy.spin(Relay())
+    rclpy.spin(ChainedRequests())
