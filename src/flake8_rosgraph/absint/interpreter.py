@@ -313,7 +313,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
                 return frame.env[name]
             return self.load_global(frame.module, name)
         if func is not None:
-            if name in func.locals and frame.cls is None:
+            if (name in func.locals or name.startswith("$")) and frame.cls is None:
+                # ``$tN`` are the CFG's own temporaries (a for loop's iterable): always local
                 return frame.env.get(name, BOTTOM)
             if name not in func.global_decl:
                 owner = func.fid if name in func.locals else \
