@@ -36,14 +36,25 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
     "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
-    "client": frozenset({"node", "name", "type", "via"}),
+    "client": frozenset({"node", "name", "type", "via", "object", "group"}),
     "action_server": frozenset({"node", "name", "type", "callback", "via"}),
-    "action_client": frozenset({"node", "name", "type", "via"}),
+    "action_client": frozenset({"node", "name", "type", "via", "object", "group"}),
     "timer": frozenset({"node", "period", "callback"}),
     "parameter": frozenset({"node", "name", "default"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
-    "parameter_use": frozenset({"node", "name", "names"}),
+    "parameter_use": frozenset({"node", "name", "names", "parameters", "how"}),
     "publish": frozenset({"publisher", "msg", "type"}),
+    # read by the misuse facts (flake8_rosgraph.graph.facts) for ROS101-ROS106
+    "callback": frozenset({"function", "role", "passes", "annotated", "returns", "node", "group",
+                          "executor", "entity", "future"}),
+    "future": frozenset({"future", "entity"}),
+    "spin": frozenset({"node", "executor"}),
+    "executor_node": frozenset({"executor", "node"}),
+    "waits_for": frozenset({"entity"}),
+    "rate": frozenset({"node", "frequency", "object"}),
+    "context_init": frozenset({"context"}),
+    "context_shutdown": frozenset({"context"}),
+    "node_destroy": frozenset({"node"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
     "launch_node": frozenset({"package", "executable"}),
     "launch_description": frozenset({"description"}),
@@ -56,7 +67,16 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "parameter": frozenset({"node", "name"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node"}),
+    "callback": frozenset({"function", "role", "passes"}),
     "publish": frozenset({"publisher", "msg"}),
+    "future": frozenset({"future", "entity"}),
+    "spin": frozenset(),
+    "executor_node": frozenset({"executor", "node"}),
+    "waits_for": frozenset({"entity"}),
+    "rate": frozenset({"node", "frequency"}),
+    "context_init": frozenset(),
+    "context_shutdown": frozenset(),
+    "node_destroy": frozenset({"node"}),
     "launch_node": frozenset(),
     "launch_description": frozenset(),
 }
@@ -198,6 +218,17 @@ def test_shipped_bases_and_via_classes_are_modelled():
     assert problems == []
 
 
+def test_blocking_calls_are_modelled_with_why_and_duration():
+    library = load_library(SHIPPED)
+    assert library.method("rclpy.client.Client", "call").blocking
+    assert library.method("rclpy.executors.MultiThreadedExecutor", "spin").blocking
+    assert library.functions["rclpy.spin_until_future_complete"].blocking
+    assert library.functions["time.sleep"].blocks_for == "secs"
+    assert library.method("rclpy.client.Client", "call_async").blocking is None
+    # rclpy's Future.result() returns None before the future is done: it never blocks.
+    assert library.method("rclpy.task.Future", "result").blocking is None
+
+
 def test_consistency_check_catches_a_misspelt_model():
     # The consistency test above is only worth something if it can fail.
     library = load_library([("typo.toml", """
@@ -266,6 +297,15 @@ BROKEN: dict[str, tuple[str, str]] = {
                                "constants.'acme.X': expected { value = … }"),
     "alias to a non-string": ('[aliases]\n"acme.A" = 3\n', "aliases.'acme.A': expected a string"),
     "section not a table": ("functions = 3\n", "[functions] must be a table"),
+    "blocking not a string": ('[functions."acme.wait"]\nblocking = true\n',
+                              "functions.'acme.wait'.blocking: expected a non-empty string"),
+    "blocking empty": ('[functions."acme.wait"]\nblocking = " "\n',
+                       "functions.'acme.wait'.blocking: expected a non-empty string"),
+    "blocks_for without blocking": ('[functions."acme.wait"]\nparams = "secs"\nblocks_for = "secs"\n',
+                                    "functions.'acme.wait'.blocks_for: only meaningful with blocking"),
+    "blocks_for not a parameter": ('[functions."acme.wait"]\nparams = "secs"\nblocking = "sleeps"\n'
+                                   'blocks_for = "seconds"\n',
+                                   "functions.'acme.wait'.blocks_for: 'seconds' is not a parameter"),
 }
 
 #: Broken files that once escaped the loader's reporting (kept as regressions).

@@ -107,6 +107,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = (),
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
+        diagnostics.extend(graph.diagnostics)
         _cpp_nodes(root, graph, diagnostics)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
         _interfaces(root, interface_dirs, graph, analysis, diagnostics)

@@ -262,3 +262,15 @@ def test_a_factory_called_twice_makes_two_objects(analyse):
     """})
     assert a.strings("m", "first_label") == ["a"]
     assert a.strings("m", "second_label") == ["b"]
+
+
+def test_a_for_loop_inside_a_function_iterates_its_elements(analyse):
+    # The loop's iterable lives in a CFG temporary: it is a local of the function, not a global.
+    a = analyse({"m.py": """
+        def f():
+            global last
+            for name in ('x', 'y'):
+                last = name
+        f()
+    """})
+    assert sorted(a.strings("m", "last")) == ["x", "y"]

@@ -9,7 +9,7 @@ from flake8_rosgraph.rules import RULES, RuleConfig, rule_by_code, run_rules
 from flake8_rosgraph.rules.base import Finding, Rule
 from flake8_rosgraph.rules.docs import SECTIONS, rule_doc
 
-EXPECTED_CODES = ([f"ROS{n:03d}" for n in range(1, 11)] + ["ROS104", "ROS107"]
+EXPECTED_CODES = ([f"ROS{n:03d}" for n in range(1, 11)] + [f"ROS{n:03d}" for n in range(101, 108)]
                   + [f"ROS{n:03d}" for n in range(201, 205)])
 
 

@@ -13,6 +13,7 @@ import posixpath
 import string
 from dataclasses import dataclass
 
+from .callgraph import CallSite
 from .engine import Effect
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
@@ -63,9 +64,9 @@ class CallSemantics:
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
         if isinstance(atom, FuncAtom):
-            return self.call_user(atom.fid, None, args)
+            return self.call_user(atom.fid, None, args, node)
         if isinstance(atom, BoundMethod):
-            return self.call_user(atom.fid, atom.receiver, args)
+            return self.call_user(atom.fid, atom.receiver, args, node)
         if isinstance(atom, ClassAtom):
             return self.instantiate(atom, args, node)
         if isinstance(atom, Extern):
@@ -144,12 +145,28 @@ class CallSemantics:
         first = [atoms([receiver])] if receiver is not None else []
         return first + [TOP] * (len(names) - len(first))
 
-    def call_user(self, fid: int, receiver: Atom | None, args: "Args") -> Value:
+    def call_user(self, fid: int, receiver: Atom | None, args: "Args", node=None) -> Value:
         func = self.program.functions[fid]
         ctx = self.bind_user(func, receiver, args)
         if ctx is None:
             return BOTTOM
-        return self.an.call_summary(fid, ctx, self.frame.task)
+        task = self.an.function_task(fid, ctx)
+        self.record_call(node, ("task", task))
+        return self.an.read(("ret", task), self.frame.task)
+
+    def record_call(self, node, callee: tuple, args: tuple = (), effects: tuple = ()) -> None:
+        """Note the call at ``node`` in the current task's call sites (see :mod:`.callgraph`)."""
+        frame = self.frame
+        if node is None or not hasattr(node, "lineno"):
+            return
+        frame.calls[(id(node), callee)] = CallSite(
+            frame.module.path, node.lineno, frame.module.column(node), callee,
+            self.conditional_here(), frame.guarded, args, effects, node)
+
+    def conditional_here(self) -> bool:
+        """Whether the current operation runs on some normal paths through the body only."""
+        frame = self.frame
+        return frame.cls is None and frame.block not in frame.dominators
 
     def schedule_callback(self, atom: Atom) -> None:
         if isinstance(atom, FuncAtom):
@@ -282,13 +299,17 @@ class CallSemantics:
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
         frame = self.frame
+        recorded = []
         for index, spec in enumerate(model.effects):
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
             key = (id(node), model.qualname, index, receiver)
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,
-                frame.cls is None and frame.block not in frame.dominators)
+                self.conditional_here())
+            recorded.append(frame.effects[key])
+        self.record_call(node, ("lib", model.qualname), tuple(sorted(bound.items())),
+                         tuple(recorded))
         for store in model.stores:
             value = self.ref(store.value, bound, receiver)
             for key in self.format_keys(store.key, bound):

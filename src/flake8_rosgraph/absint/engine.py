@@ -23,6 +23,7 @@ from collections import deque
 from dataclasses import dataclass, replace
 from typing import Hashable, Iterable
 
+from .callgraph import CallGraph
 from .library import LibraryModel
 from .program import Program
 from .values import BOTTOM, TOP, Value
@@ -79,6 +80,8 @@ class Analysis:
         self._growth: dict[Hashable, int] = {}
         self._overflowed: set[int] = set()
         self.effects: dict[Task, dict[tuple, Effect]] = {}
+        self.calls: dict[Task, dict] = {}          # task -> its call sites (see callgraph.py)
+        self.falls_off: set[Task] = set()          # tasks whose body may end without return
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
         self.diagnostics: list[Diagnostic] = []
@@ -163,10 +166,6 @@ class Analysis:
                 return min(index, MAX_CONTEXTS)
         return 0
 
-    def call_summary(self, fid: int, ctx: tuple, caller: Task) -> Value:
-        task = self.function_task(fid, ctx)
-        return self.read(("ret", task), caller)
-
     def run(self) -> None:
         """Analyse from every entry point until nothing changes (or the budget runs out)."""
         from .interpreter import Interpreter
@@ -195,8 +194,13 @@ class Analysis:
             task = self._queue.popleft()
             self._queued.discard(task)
             self.task_runs += 1
-            ret, effects = self._interp.run_task(task)
+            ret, effects, calls, falls_off = self._interp.run_task(task)
             self.effects[task] = effects
+            self.calls[task] = calls
+            if falls_off:
+                self.falls_off.add(task)
+            else:
+                self.falls_off.discard(task)
             if task[0] == "fn":
                 self.write(("ret", task), ret)
 
@@ -258,6 +262,15 @@ class Analysis:
         return out
 
     # -- results --------------------------------------------------------------------------
+    def call_graph(self) -> CallGraph:
+        """The calls each task made on its latest run."""
+        return CallGraph(self.calls)
+
+    def returns(self, task: Task) -> Value:
+        """What a function task's ``return`` statements may return (falling off the end of
+        the body, see :attr:`falls_off`, is not included: ⊥ when no return runs)."""
+        return self.heap.get(("ret", task), BOTTOM)
+
     def all_effects(self) -> list[Effect]:
         """Effects of the latest run of every task, deduplicated, in a stable order.
 

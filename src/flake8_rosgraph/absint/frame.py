@@ -20,7 +20,10 @@ class Frame:
     cls: Class | None = None
     dominators: frozenset[int] = frozenset()
     block: int = 0
+    guarded: bool = False  # the current block is inside a try with handlers
     env: Env = field(default_factory=dict)
     effects: dict = field(default_factory=dict)
+    calls: dict = field(default_factory=dict)
     comp: list[dict[str, Value]] = field(default_factory=list)
     ret: Value = BOTTOM
+    falls_off: bool = False  # the end of the body is reached without a return statement

@@ -38,7 +38,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     # =====================================================================================
     # tasks and CFGs
     # =====================================================================================
-    def run_task(self, task: Task) -> tuple[Value, dict]:
+    def run_task(self, task: Task) -> tuple[Value, dict, dict, bool]:
         if task[0] == "mod":
             module = self.program.ensure(task[1])
             if module is None:  # too deeply nested to walk: reported by the program
@@ -64,7 +64,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             self.frame = outer
         if frame.func is not None and frame.func.is_generator:
             ret = TOP
-        return ret, frame.effects
+        return ret, frame.effects, frame.calls, frame.falls_off
 
     @staticmethod
     def _cfg_of(frame: Frame) -> CFG:
@@ -100,6 +100,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 return
             block = cfg.blocks[bid]
             frame.block = bid
+            frame.guarded = bool(block.exc_succs)
             frame.env = dict(states[bid])
             for op in block.ops:
                 self.exec_op(op)
@@ -114,6 +115,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             for handler in block.exc_succs:
                 targets.append((handler, states[bid]))
                 targets.append((handler, out))
+            if cfg.exit in (t for t, _ in targets) and not (block.ops and isinstance(block.ops[-1], Return)):
+                frame.falls_off = True
             for target, state in targets:
                 old = states.get(target)
                 if old is None:
@@ -230,7 +233,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             self.eval(kw.value)
         self.an.write(("bases", cid), atoms([Seq("tuple", bases)]))
         outer = self.frame
-        inner = Frame(outer.task, outer.module, outer.func, klass, effects=outer.effects)
+        inner = Frame(outer.task, outer.module, outer.func, klass, effects=outer.effects,
+                      calls=outer.calls)
         self.frame = inner
         try:
             self.run_cfg(klass.cfg, {})
@@ -312,7 +316,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 return frame.env[name]
             return self.load_global(frame.module, name)
         if func is not None:
-            if name in func.locals and frame.cls is None:
+            if (name in func.locals or name.startswith("$")) and frame.cls is None:
+                # ``$tN`` are the CFG's own temporaries (a for loop's iterable): always local
                 return frame.env.get(name, BOTTOM)
             if name not in func.global_decl:
                 owner = func.fid if name in func.locals else \

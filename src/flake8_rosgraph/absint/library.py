@@ -156,6 +156,11 @@ class FunctionModel:
     effects: tuple[EffectSpec, ...] = ()
     stores: tuple[StoreSpec, ...] = ()
     callbacks: tuple[str, ...] = ()
+    #: Why a call blocks its thread until something else happens (``None``: it returns
+    #: promptly). Opaque to the analyser; rules about callbacks read it.
+    blocking: str | None = None
+    #: The parameter holding how long a blocking call lasts, in seconds, when it is bounded.
+    blocks_for: str | None = None
 
 
 @dataclass(frozen=True)
@@ -252,7 +257,7 @@ class LibraryModel:
 
 
 # -- loading ----------------------------------------------------------------------------
-_FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks"}
+_FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "blocking", "blocks_for"}
 _CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods"}
 _TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta"}
 
@@ -319,9 +324,19 @@ def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
             raise StubError(f"{where}.stores[{i}]: needs exactly on, key, value")
         stores.append(StoreSpec(str(st["on"]), str(st["key"]),
                                 _ref(st["value"], f"{where}.stores[{i}].value")))
+    blocking = raw.get("blocking")
+    if blocking is not None and (not isinstance(blocking, str) or not blocking.strip()):
+        raise StubError(f"{where}.blocking: expected a non-empty string saying why the call blocks")
+    blocks_for = raw.get("blocks_for")
+    if blocks_for is not None:
+        if blocking is None:
+            raise StubError(f"{where}.blocks_for: only meaningful with blocking = \"…\"")
+        if blocks_for not in {p.name for p in signature.params}:
+            raise StubError(f"{where}.blocks_for: {blocks_for!r} is not a parameter")
     return FunctionModel(qualname, signature, _returns(raw.get("returns"), where + ".returns"),
                          tuple(effects), tuple(stores),
-                         _strings(raw.get("callbacks", []), where + ".callbacks"))
+                         _strings(raw.get("callbacks", []), where + ".callbacks"),
+                         blocking, blocks_for)
 
 
 def _class(qualname: str, raw: Any, where: str) -> ClassModel:

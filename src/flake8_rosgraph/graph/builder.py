@@ -17,7 +17,8 @@ from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
                              Seq, Coll, Value)
 from . import names
-from .model import Entity, Location, RosGraph, RosNode
+from .model import Diagnostic, Entity, Location, RosGraph, RosNode
+from .usage import build_usage
 
 #: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
 ENTITY_KINDS: dict[str, tuple[str, str]] = {
@@ -176,7 +177,20 @@ class GraphBuilder:
             node.entities = [bucket[k] for k in sorted(bucket)]
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
+        try:
+            graph.usage = build_usage(self.analysis, self._node_labels())
+        except Exception as exc:  # a defect there must cost the misuse rules only, not the graph
+            graph.diagnostics.append(Diagnostic("", 0, "rclpy usage facts not extracted: internal "
+                                                       f"error: {type(exc).__name__}: {exc}", "error"))
         return graph
+
+    def _node_labels(self) -> dict[str, str]:
+        """Node object site -> how messages name it (its name(s), or its class)."""
+        out = {}
+        for site, nodes in self.by_object.items():
+            shown = sorted({n.fqn or n.name or n.cls or "?" for n in nodes})
+            out[site] = " or ".join(f"'{s}'" for s in shown)
+        return out
 
     # -- nodes ------------------------------------------------------------------------------
     def _add_node(self, eff: Effect) -> None:

@@ -110,6 +110,9 @@ class RosGraph:
     messages: Any = None
     #: The interface definitions known (``flake8_rosgraph.interfaces.catalogue.Catalogue``).
     interfaces: Any = None
+    #: How the code uses rclpy beyond the graph (``flake8_rosgraph.graph.usage.UsageFacts``:
+    #: callbacks, blocking calls, executors, parameter uses); ``None`` when not extracted.
+    usage: Any = None
 
     def entities(self, kind: str | None = None):
         """Yield ``(node, entity)`` pairs, optionally of one kind."""

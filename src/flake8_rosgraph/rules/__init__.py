@@ -1,4 +1,4 @@
-"""The graph rules ROS001–ROS010 and ROS201–ROS204: one module per rule, run together over one extracted graph.
+"""The graph rules ROS001–ROS010, the rclpy-misuse rules ROS101–ROS106 and ROS201–ROS204: one module per rule, run together over one extracted graph.
 
 ``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
 SARIF writer, the generated ``docs/rules.md``) reads, in code order.
@@ -20,7 +20,12 @@ from .ros007_duplicate_node_name import DuplicateNodeName
 from .ros008_service_client_without_server import ServiceClientWithoutServer
 from .ros009_action_client_without_server import ActionClientWithoutServer
 from .ros010_unresolved_name import UnresolvedName
+from .ros101_blocking_call_in_callback import BlockingCallInCallback
+from .ros102_undeclared_parameter import UndeclaredParameter
+from .ros103_callback_signature import CallbackSignature
 from .ros104_publish_type_mismatch import PublishTypeMismatch
+from .ros105_lifecycle_order import LifecycleOrder
+from .ros106_invalid_timer_period import InvalidTimerPeriod
 from .ros107_message_field import MessageField
 from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
@@ -38,7 +43,12 @@ RULES: tuple[Rule, ...] = (
     ServiceClientWithoutServer(),
     ActionClientWithoutServer(),
     UnresolvedName(),
+    BlockingCallInCallback(),
+    UndeclaredParameter(),
+    CallbackSignature(),
     PublishTypeMismatch(),
+    LifecycleOrder(),
+    InvalidTimerPeriod(),
     MessageField(),
     UnknownExecutable(),
     IneffectiveRemap(),

@@ -1,0 +1,74 @@
+"""Call sites: which calls each analysed task makes, for rules that follow call chains.
+
+The engine records, for every task (a body under one context), each call it made on
+its latest run: where (path, line, column), whether the call runs on every normal path
+through the body, and what was called — another task of the workspace, or a modelled
+library function with its arguments bound by parameter name (and the effects that call
+recorded).  Nothing here knows what a library function means; consumers look the
+qualified name up in the library model.
+"""
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from typing import Iterator
+
+from .values import Value
+
+
+@dataclass(frozen=True)
+class CallSite:
+    """One call made by a task.
+
+    ``callee`` is ``("task", task)`` for workspace code, ``("lib", qualname)`` for a
+    modelled library function or method (``args`` then holds its bound arguments,
+    ``"self"`` the receiver, and ``effects`` what the call recorded).
+    """
+
+    path: str
+    line: int
+    column: int
+    callee: tuple
+    conditional: bool     # runs on some normal paths through the body only
+    guarded: bool         # inside a ``try`` that has handlers
+    args: tuple[tuple[str, Value], ...] = ()
+    effects: tuple = ()
+    #: The call expression, for messages only (never compared).
+    node: ast.AST | None = field(default=None, compare=False, hash=False, repr=False)
+
+    def arg(self, name: str) -> Value | None:
+        for key, value in self.args:
+            if key == name:
+                return value
+        return None
+
+    def text(self) -> str:
+        """The called expression as written (``self.client.call``), for messages."""
+        func = getattr(self.node, "func", self.node)
+        try:
+            return ast.unparse(func) if func is not None else "?"
+        except (ValueError, RecursionError, AttributeError):
+            return "?"
+
+
+class CallGraph:
+    """The calls of every task's latest run (a view over the engine's table)."""
+
+    def __init__(self, calls: dict[tuple, dict[tuple, CallSite]]) -> None:
+        self._calls = calls
+        self._sorted: dict[tuple, list[CallSite]] = {}
+
+    def tasks(self) -> Iterator[tuple]:
+        return iter(sorted(self._calls, key=repr))
+
+    def sites(self, task: tuple) -> list[CallSite]:
+        """The calls ``task`` makes, in source order."""
+        known = self._sorted.get(task)
+        if known is None:
+            known = self._sorted[task] = sorted(self._calls.get(task, {}).values(),
+                                                key=lambda s: (s.line, s.column, repr(s.callee)))
+        return known
+
+    def tasks_of(self, fid: int) -> list[tuple]:
+        """Every analysed task of function ``fid`` (one per context)."""
+        return sorted((t for t in self._calls if t[0] == "fn" and t[1] == fid), key=repr)
