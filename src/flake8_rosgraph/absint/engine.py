@@ -11,6 +11,15 @@ a cell is re-run when the cell grows, so the whole program reaches a joint fixpo
 because every cell lives in a lattice of finite height, that always happens.  Budgets
 bound the work anyway and turn a runaway analysis into "unknown" plus a diagnostic.
 
+Budgets are local (see :class:`Account`): the entry points of a module share an
+account charged for the task runs they cause, and an account that overspends stops
+alone, however the others fare: no budget is shared, so no module can use up another
+one's share.  What it still had to analyse becomes unknown — return values ⊤, the
+names of entities its unfinished tasks created unknown — and one diagnostic names the
+module and the function that consumed the budget.  The order of work stays one queue
+for the whole program (results where nothing overspends are those of a plain
+worklist).  The account is the unit a per-module cache would key on.
+
 Entry points are all module top levels, then every module-level function nobody
 called (library code may call it), then every callable a library model says it calls
 back later, then every leaf class derived from a library class marked ``entry`` that
@@ -19,8 +28,8 @@ no analysed code instantiates.
 from __future__ import annotations
 
 import ast
-from collections import deque
-from dataclasses import dataclass
+from collections import Counter, deque
+from dataclasses import dataclass, field, replace
 from typing import Hashable
 
 from .library import LibraryModel
@@ -29,6 +38,8 @@ from .values import BOTTOM, TOP, Value
 
 #: Contexts per function before further calls share one all-⊤ context.
 MAX_CONTEXTS = 8
+#: Task runs one entry point may cause before its unfinished work becomes unknown.
+ENTRY_TASK_RUNS = 2000
 #: Block visits per task run before the run is abandoned as ⊤.
 MAX_BLOCK_VISITS = 4000
 #: Visits of a loop head before its environment is widened.
@@ -65,6 +76,19 @@ class Diagnostic:
     severity: str = "warning"  # "info" for precision given up on purpose (context bounds)
 
 
+@dataclass(eq=False)
+class Account:
+    """The budget of one module's entry points (its top level, its functions nobody calls,
+    its classes a library instantiates): the task runs they cause (their own analysis, the
+    calls they make, the re-runs their heap writes trigger) and the tasks waiting for it."""
+
+    module: str
+    runs: int = 0
+    #: Runs per function (fid) or module top level (name): who consumed the budget.
+    spent: Counter = field(default_factory=Counter)
+    exhausted: bool = False
+
+
 class Analysis:
     """Runs the whole-program fixpoint and keeps its results (heap, effects, diagnostics)."""
 
@@ -82,12 +106,24 @@ class Analysis:
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
         self.diagnostics: list[Diagnostic] = []
-        self._queue: deque[Task] = deque()
-        self._queued: set[Task] = set()
         self._known: set[Task] = set()
-        self._exhausted = False
-        size = len(program.functions) + len(program.modules)
-        self.max_task_runs = max_task_runs if max_task_runs is not None else 200 + 60 * size
+        #: Accounts by module name; the work queue; the account each queued task is charged to.
+        self.accounts: dict[str, Account] = {}
+        self._queue: deque[Task] = deque()
+        self._queued: dict[Task, Account] = {}
+        #: The account that first queued each task; a task's re-run falls back to it.
+        self._owner: dict[Task, Account] = {}
+        self._current: Account | None = None
+        #: Tasks left unfinished by an exhausted account: their results are not to be trusted.
+        self.abandoned: set[Task] = set()
+        self._to_abandon: list[Task] = []
+        #: The whole analysis ran out of budget: nothing runs any more.
+        self.stopped = False
+        #: The whole analysis stops here (every account still busy is stopped). By default
+        #: only the accounts bound the work: a shared cap would let one module's runaway
+        #: analysis starve entry points that start later (the functions nobody calls).
+        self.max_task_runs = max_task_runs if max_task_runs is not None \
+            else ENTRY_TASK_RUNS * max(1, len(program.modules))
         self.task_runs = 0
         self.every_module_is_entry = every_module_is_entry
         self.relevant: set[str] = set()
@@ -114,10 +150,27 @@ class Analysis:
 
     # -- tasks ----------------------------------------------------------------------------
     def enqueue(self, task: Task) -> None:
+        """Queue ``task`` on the account that causes it: the running task's; outside any
+        task (an entry point, a re-run caused by abandoning a task), its owner's, else its
+        module's."""
         self._known.add(task)
-        if task not in self._queued:
-            self._queued.add(task)
-            self._queue.append(task)
+        if task in self._queued:
+            return
+        account = self._current or self._owner.get(task) or self._module_account(task)
+        if account.exhausted or self.stopped:
+            self._to_abandon.append(task)
+            return
+        self._owner.setdefault(task, account)
+        self._queued[task] = account
+        self._queue.append(task)
+
+    def _module_account(self, task: Task) -> Account:
+        """The account of the module ``task`` belongs to: all entry points of a module share it."""
+        module = task[1] if task[0] == "mod" else self.program.functions[task[1]].module.name
+        account = self.accounts.get(module)
+        if account is None:
+            account = self.accounts[module] = Account(module)
+        return account
 
     def function_task(self, fid: int, ctx: tuple) -> Task:
         """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts.
@@ -166,7 +219,7 @@ class Analysis:
         return self.read(("ret", task), caller)
 
     def run(self) -> None:
-        """Analyse from every entry point until nothing changes (or the budget runs out)."""
+        """Analyse from every entry point until nothing changes (or the budgets run out)."""
         from .interpreter import Interpreter
         self._interp = Interpreter(self)
         self.relevant = set(self.program.modules) if self.every_module_is_entry \
@@ -175,27 +228,77 @@ class Analysis:
             if self.program.ensure(name) is not None:
                 self.enqueue(("mod", name, ()))
         self._drain()
-        while not self._exhausted and (self._uncalled_functions() or self._entry_classes()):
+        while not self.stopped and (self._uncalled_functions() or self._entry_classes()):
             self._drain()
 
     def _drain(self) -> None:
-        while self._queue:
+        """Run queued tasks until none is left, stopping each account at its budget."""
+        queue = self._queue
+        while queue:
             if self.task_runs >= self.max_task_runs:
-                if not self._exhausted:
-                    self._exhausted = True
-                    self.diagnostics.append(Diagnostic(
-                        "", 0, f"analysis budget of {self.max_task_runs} task runs exhausted; "
-                        "results may be incomplete"))
-                self._queue.clear()
-                self._queued.clear()
+                self.stopped = True
+                for account in dict.fromkeys(self._queued.values()):
+                    self._exhaust(account, f"the workspace's budget of {self.max_task_runs} "
+                                           "task runs ran out")
                 return
-            task = self._queue.popleft()
-            self._queued.discard(task)
+            task = queue.popleft()
+            account = self._queued.pop(task)
+            if account.runs >= ENTRY_TASK_RUNS:
+                queue.appendleft(task)
+                self._queued[task] = account
+                self._exhaust(account, f"its budget of {ENTRY_TASK_RUNS} task runs ran out")
+                continue
             self.task_runs += 1
-            ret, effects = self._interp.run_task(task)
+            account.runs += 1
+            account.spent[task[1]] += 1
+            self._current = account
+            try:
+                ret, effects = self._interp.run_task(task)
+            finally:
+                self._current = None
             self.effects[task] = effects
             if task[0] == "fn":
                 self.write(("ret", task), ret)
+            self._abandon_pending()
+
+    def _exhaust(self, account: Account, why: str) -> None:
+        """Stop ``account``: its queued tasks are abandoned, and a diagnostic says where."""
+        account.exhausted = True
+        mine = [task for task in self._queue if self._queued[task] is account]
+        if mine:
+            kept = [task for task in self._queue if self._queued[task] is not account]
+            self._queue.clear()
+            self._queue.extend(kept)
+            for task in mine:
+                del self._queued[task]
+        self._to_abandon.extend(mine)
+        hottest, runs = min(account.spent.items(), key=lambda item: (-item[1], str(item[0])),
+                            default=(account.module, 0))
+        name, path, line = self._place(hottest)
+        self.diagnostics.append(Diagnostic(
+            path, line, f"analysis from the entry points of module {account.module} stopped: "
+                        f"{why}, {runs} of them in {name} (line {line}); what they create may be "
+                        "incomplete and its names are unknown"))
+        self._abandon_pending()
+
+    def _place(self, key: int | str) -> tuple[str, str, int]:
+        """``(name, path, line)`` of a function (by fid) or a module top level (by name)."""
+        if isinstance(key, int):
+            func = self.program.functions[key]
+            return func.qualname, func.module.path, getattr(func.node, "lineno", 1)
+        module = self.program.modules[key]
+        return f"module {key}", module.path, 1
+
+    def _abandon_pending(self) -> None:
+        """Tasks an exhausted account still had to (re-)run: their return values become ⊤
+        (callers elsewhere must not take a partial summary for a complete one)."""
+        while self._to_abandon:
+            task = self._to_abandon.pop()
+            if task in self.abandoned:
+                continue
+            self.abandoned.add(task)
+            if task[0] == "fn":
+                self.write(("ret", task), TOP)  # readers re-run on their own accounts
 
     def relevant_modules(self) -> set[str]:
         """Modules that import an active library (see :meth:`LibraryModel.active_roots`), or a
@@ -245,12 +348,23 @@ class Analysis:
 
     # -- results --------------------------------------------------------------------------
     def all_effects(self) -> list[Effect]:
-        """Effects of the latest run of every task, deduplicated, in a stable order."""
+        """Effects of the latest run of every task, deduplicated, in a stable order.
+
+        The effects of an abandoned task come from a run on inputs that were still
+        growing: their names may be a part of the real ones, so they become unknown."""
         seen: dict[Effect, None] = {}
-        for effects in self.effects.values():
+        for task, effects in self.effects.items():
+            unfinished = task in self.abandoned
             for eff in effects.values():
-                seen[eff] = None
+                seen[_with_unknown_names(eff) if unfinished else eff] = None
         return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
+
+
+def _with_unknown_names(effect: Effect) -> Effect:
+    """``effect`` with every argument made only of constants (names, types, periods) ⊤;
+    the objects it acts on (the node, the target) stay known."""
+    return replace(effect, args=tuple((key, TOP if value.consts() is not None else value)
+                                      for key, value in effect.args))
 
 
 def _numbers_only(value: Value) -> bool:
