@@ -176,16 +176,16 @@ class Analysis:
         """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts.
 
         A method's receiver is always kept, so every object is analysed as itself. The
-        bound counts the distinct *other* arguments per function — per receiver for
-        ``__init__``, which runs once per object, so that a fleet of nodes built from one
-        class keeps every name. Past the bound the other arguments become ⊤ (and a
-        diagnostic says so once): a logging helper called with a hundred messages costs
-        nine analyses, not a hundred.
+        bound counts the distinct *other* arguments per method and receiver — a fleet of
+        nodes built from one class keeps every node's name, and every parameter a shared
+        helper of the base class declares for each of them — and per function otherwise.
+        Past the bound the other arguments become ⊤ (and a diagnostic says so once): a
+        logging helper called with a hundred messages on one object costs nine analyses,
+        not a hundred.
         """
         func = self.program.functions[fid]
         method = func.cls is not None and func.kind == "function" and len(ctx) > 0
-        per_object = method and getattr(func.node, "name", "") == "__init__"
-        bucket = (fid, ctx[0]) if per_object else (fid,)
+        bucket = (fid, ctx[0]) if method else (fid,)
         rest = ctx[1:] if method else ctx
         seen = self.contexts.setdefault(fid, {})
         counted = self._context_counts.setdefault(bucket, set())
