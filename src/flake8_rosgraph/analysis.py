@@ -6,6 +6,8 @@ even internal errors become diagnostics on the returned graph.
 """
 from __future__ import annotations
 
+import contextlib
+import gc
 import traceback
 from importlib.resources import files
 from pathlib import Path
@@ -53,9 +55,30 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
         return []
 
 
+@contextlib.contextmanager
+def collector_paused():
+    """Python's cyclic garbage collector off for the block, as it was after.
+
+    The analysis allocates millions of small objects that live until it ends and
+    form no garbage cycles, so every collection the allocations trigger scans an
+    ever-growing heap for nothing (a quarter of the run time on a large workspace).
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
     """The ROS computation graph of the Python code under ``root``; never raises."""
-    root = Path(root)
+    with collector_paused():
+        return _build_graph(Path(root), stub_files)
+
+
+def _build_graph(root: Path, stub_files: Sequence[Path]) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -70,6 +93,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
+        analysis.close()  # frees the analysis by reference counting, not a later collection
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "

@@ -115,3 +115,34 @@ def test_counters_in_callbacks_are_widened_not_counted_up(tmp_path):
     counts = [v for k, v in analysis.heap.items() if k[0] == "a" and k[2] == "count"]
     assert counts and counts[0].is_top
     assert analysis.task_runs < 15  # not one run per value of the counter
+
+
+def test_the_analysis_leaves_no_garbage_cycle_and_restores_the_collector(tmp_path):
+    """The analysis runs with the cyclic collector paused and must be freed by reference
+    counting: a cycle through it would keep every heap value, AST and CFG alive until a
+    full collection later in flake8's own checks."""
+    import gc
+    import weakref
+    from flake8_rosgraph.analysis import _build_graph, collector_paused
+
+    for rel, text in FILES.items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(textwrap.dedent(text))
+    created = []
+    original = Analysis.__init__
+
+    def remember(self, *args, **kwargs):
+        original(self, *args, **kwargs)
+        created.append(weakref.ref(self))
+
+    gc.collect()
+    Analysis.__init__ = remember
+    try:
+        with collector_paused():
+            assert not gc.isenabled()
+            graph = _build_graph(tmp_path, ())
+            assert created and created[0]() is None, "the analysis outlived build_graph"
+    finally:
+        Analysis.__init__ = original
+    assert gc.isenabled()
+    assert graph.nodes

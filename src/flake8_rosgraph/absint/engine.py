@@ -346,6 +346,11 @@ class Analysis:
         if task not in self._known:
             self.enqueue(task)
 
+    def close(self) -> None:
+        """Drop the interpreter: it and the analysis refer to each other, a cycle that would
+        keep every analysis object alive until the garbage collector finds it."""
+        self._interp = None
+
     # -- results --------------------------------------------------------------------------
     def all_effects(self) -> list[Effect]:
         """Effects of the latest run of every task, deduplicated, in a stable order.
