@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
-from . import __version__
+from . import __version__, flake8_jobs
 from .cache import WorkspaceReport, start_run, workspace_report
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options
 from .root import discover_root, find_vcs_root
@@ -49,6 +49,8 @@ class _Run:
     codes: CodeFilter
     #: Why the options could not be used, reported as ROS000 on each checked file.
     error: str | None = None
+    #: Whether flake8 could report any ROS code at all (``--select E,W``: no analysis).
+    selected: bool = True
     roots: dict[Path, Path] = field(default_factory=dict, compare=False)
 
 
@@ -156,12 +158,15 @@ class RosGraphChecker:
         try:
             from .rules import RULES
 
-            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES))
+            codes = CodeFilter.build(flake8_selectors(options), RULES)
+            _RUN = _Run(settings, codes, selected=_ros_selected(options, codes, RULES))
         except Exception as exc:
             if settings.debug:
                 raise
             _RUN = _Run(settings, CodeFilter(), error=_describe(exc))
         _install_report_hook()
+        flake8_jobs.install(lambda filename: checker_results(_current_run(), filename),
+                            lambda: _RUN is not None and _RUN.error is None and _RUN.selected)
 
     def run(self) -> Iterator[tuple[int, int, str, type]]:
         try:
@@ -169,20 +174,38 @@ class RosGraphChecker:
         except Exception as exc:  # not even the rules could be imported
             yield 1, 0, _internal_error_text(_describe(exc)), type(self)
             return
-        try:
-            if run.error is not None:
-                raise RuntimeError(run.error)
-            findings = findings_in_file(run, self.filename)
-            errors = analysis_errors(run, self.filename)
-        except Exception as exc:
-            if run.settings.debug:
-                raise
-            yield 1, 0, _internal_error_text(_describe(exc)), type(self)
-            return
-        for error in errors:
-            yield 1, 0, _analysis_error_text(error), type(self)
-        for finding in findings:
-            yield finding.location.line, finding.location.column - 1, f"{finding.code} {finding.message}", type(self)
+        if not run.selected or flake8_jobs.deferred():
+            return  # nothing could be reported, or the main process adds it (flake8 -jN)
+        for line, column, text in checker_results(run, self.filename):
+            yield line, column, text, type(self)
+
+
+def checker_results(run: _Run, filename: str) -> list[tuple[int, int, str]]:
+    """What the checker reports for ``filename``: ``(line, 0-based column, "CODE text")``."""
+    try:
+        if run.error is not None:
+            raise RuntimeError(run.error)
+        findings = findings_in_file(run, filename)
+        errors = analysis_errors(run, filename)
+    except Exception as exc:
+        if run.settings.debug:
+            raise
+        return [(1, 0, _internal_error_text(_describe(exc)))]
+    return ([(1, 0, _analysis_error_text(error)) for error in errors]
+            + [(f.location.line, f.location.column - 1, f"{f.code} {f.message}") for f in findings])
+
+
+def _ros_selected(options: Any, codes: CodeFilter, rules: Any) -> bool:
+    """Whether flake8's ``--select``/``--ignore`` (and the off-by-default opt-ins) leave any
+    ROS code to report; ``--per-file-ignores`` only ever removes more. Unsure: yes."""
+    try:
+        from flake8.style_guide import Decision, DecisionEngine
+
+        decider = DecisionEngine(options)
+        candidates = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
+        return any(codes(code) and decider.decision_for(code) is Decision.Selected for code in candidates)
+    except Exception:
+        return True
 
 
 # -- the report stage ------------------------------------------------------------------------
