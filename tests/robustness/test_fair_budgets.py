@@ -263,7 +263,7 @@ def test_each_exhausted_module_is_named_with_the_function_that_consumed_it(
     assert len(chain) == 1, graph["diagnostics"]
     [diag] = chain
     assert diag["path"] == "src/hostile_pkg/hostile_pkg/chain.py"
-    function = diag["message"].split(" of them in ", 1)[1].split(" ", 1)[0]
+    function = diag["message"].split(") in ", 1)[1].split(" ", 1)[0]
     assert function.startswith("helper_")
     assert diag["line"] == line_of(HOSTILE_MODULES["chain.py"], f"def {function}(")
     # Budgets are local: no module of the good package is ever stopped.
