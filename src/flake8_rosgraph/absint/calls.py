@@ -47,6 +47,8 @@ class CallSemantics:
         if func.is_top:
             self._escape(args)
             return TOP
+        if len(func.atoms) == 1:  # the common case: nothing to order
+            return self._call_atom(next(iter(func.atoms)), args, node)
         out = BOTTOM
         for atom in sorted(func, key=repr):
             out = out.join(self._call_atom(atom, args, node))

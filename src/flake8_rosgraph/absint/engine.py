@@ -28,6 +28,7 @@ no analysed code instantiates.
 from __future__ import annotations
 
 import ast
+import itertools
 from collections import Counter, deque
 from dataclasses import dataclass, field, replace
 from typing import Hashable
@@ -363,7 +364,17 @@ class Analysis:
             unfinished = task in self.abandoned
             for eff in effects.values():
                 seen[_with_unknown_names(eff) if unfinished else eff] = None
-        return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
+        # Sorted by place and kind; only effects tied on those are ordered by their arguments'
+        # text (the same order as sorting everything by it, without its cost).
+        out: list[Effect] = []
+        for _, tied in itertools.groupby(sorted(seen, key=_place_and_kind), key=_place_and_kind):
+            group = list(tied)
+            out += group if len(group) == 1 else sorted(group, key=lambda e: repr(e.args))
+        return out
+
+
+def _place_and_kind(effect: Effect) -> tuple[str, int, int, str]:
+    return effect.path, effect.line, effect.column, effect.kind
 
 
 def _with_unknown_names(effect: Effect) -> Effect:
