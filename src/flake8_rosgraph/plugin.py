@@ -6,6 +6,11 @@ and shared between worker processes through :mod:`.cache`) and yields those
 located in this file. flake8 then applies ``# noqa``, ``--select``/``--ignore``
 and ``--per-file-ignores`` as for any plugin.
 
+With ``--jobs`` above 1 the workers' checkers report nothing: the main process
+analyses beside them and adds each file's results before the report stage (see
+:mod:`.flake8_jobs`). When ``--select``/``--ignore`` leave no ROS code, nothing is
+analysed at all.
+
 The checker never raises: an internal error becomes a ``ROS000`` finding at
 line 1 (``--rosgraph-debug`` / ``ROSGRAPH_DEBUG=1`` re-raises instead). A
 workspace-level failure would hit every checked file, so the report hook keeps
