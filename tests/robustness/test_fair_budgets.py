@@ -270,6 +270,30 @@ def test_each_exhausted_module_is_named_with_the_function_that_consumed_it(
     assert not [d for d in graph["diagnostics"] if d["path"].startswith("src/good_pkg/")]
 
 
+def test_each_construct_not_followed_has_its_diagnostic(workspaces: tuple[Path, Path]) -> None:
+    mixed, _ = workspaces
+    graph = parse_graph(graph_cli(mixed, "--format", "json", cwd=mixed.parent))
+    found = {(d["path"].rsplit("/", 1)[1], d["line"], d["message"].split(" ", 1)[0])
+             for d in graph["diagnostics"] if d["severity"] == "warning"}
+    meta, dynamic = HOSTILE_MODULES["meta_exec.py"], HOSTILE_MODULES["dynamic_python.py"]
+    assert {
+        ("meta_exec.py", line_of(meta, "class Plugin("), "the"),        # the metaclass of Plugin …
+        ("meta_exec.py", line_of(meta, "exec('self.pub"), "exec()"),
+        ("dynamic_python.py", line_of(dynamic, "class Weird("), "the"),
+        ("dynamic_python.py", line_of(dynamic, "exec("), "exec()"),
+        ("dynamic_python.py", line_of(dynamic, "eval("), "eval()"),
+    } <= found
+    bounded = {(d["path"].rsplit("/", 1)[1], d["line"]) for d in graph["diagnostics"]
+               if "called in more than" in d["message"]}
+    recursion = HOSTILE_MODULES["recursion.py"]
+    assert {("recursion.py", line_of(recursion, "def grow(")),
+            ("recursion.py", line_of(recursion, "def step("))} <= bounded
+    # A name grown without bound in a loop is widened: the publisher is there, its topic unknown.
+    unbounded = [key for key in entity_keys(graph)
+                 if key[3] == "src/hostile_pkg/hostile_pkg/unbounded_name.py" and key[1] == "publishers"]
+    assert unbounded and all(key[2] is None for key in unbounded)
+
+
 def test_what_an_exhausted_module_created_has_unknown_names(workspaces: tuple[Path, Path]) -> None:
     """The chain's publisher was created from unfinished summaries: its topic is unknown,
     never one of the partial names the ring had produced so far."""

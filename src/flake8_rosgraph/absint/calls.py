@@ -405,6 +405,9 @@ class CallSemantics:
             return const(None)
         if name == "print":
             return const(None)
+        if name in ("exec", "eval") and node is not None:
+            self.not_followed(node, f"{name}() runs code the analysis does not follow: what it "
+                                    "creates is not in the graph")
         self._escape(args)
         return TOP
 
