@@ -50,6 +50,9 @@ def workspace_steps(bench: WorkspaceBench, with_plugin: bool) -> list[Step]:
     steps = [bench.startup(), bench.ast_parse(), bench.pyflakes(), bench.flake8_without()]
     if with_plugin:
         steps += [bench.flake8_cold(), bench.flake8_warm(), bench.flake8_one_changed()]
+    steps.append(bench.flake8_without_auto())
+    if with_plugin:
+        steps.append(bench.flake8_cold_auto())
     return steps + [bench.graph()]
 
 

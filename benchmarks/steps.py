@@ -99,9 +99,9 @@ class WorkspaceBench:
         self.env["ROSGRAPH_ROOT"] = str(self.root)
         self.cache_dir = self.root / CACHE_DIR_NAME
 
-    def _flake8(self, with_plugin: bool) -> Sample:
+    def _flake8(self, with_plugin: bool, jobs: str = "1") -> Sample:
         hide = [] if with_plugin else ["--hide", PLUGIN_DIST]
-        return run_command([self.python, str(LAUNCHER), *hide, "--", "-j1", "."],
+        return run_command([self.python, str(LAUNCHER), *hide, "--", f"--jobs={jobs}", "."],
                            self.root, self.env, CHECKER_OK)
 
     def flake8_version(self, with_plugin: bool) -> str:
@@ -145,6 +145,18 @@ class WorkspaceBench:
             return self._flake8(True)
 
         return Step("cold", "flake8 -j1 + plugin, cold (no cache)", measure, _count_reported)
+
+    def flake8_without_auto(self) -> Step:
+        return Step("flake8-auto", "flake8 --jobs=auto without plugin",
+                    lambda _: self._flake8(False, "auto"), _count_reported)
+
+    def flake8_cold_auto(self) -> Step:
+        """Wall time is what counts here: the workers run side by side (CPU adds up)."""
+        def measure(_: int) -> Sample:
+            shutil.rmtree(self.cache_dir, ignore_errors=True)
+            return self._flake8(True, "auto")
+
+        return Step("cold-auto", "flake8 --jobs=auto + plugin, cold", measure, _count_reported)
 
     def flake8_warm(self) -> Step:
         """Must follow :meth:`flake8_cold` in the step list: it relies on the cache that run left."""

@@ -95,23 +95,28 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     assert header in table
     for label in ("ast.parse, all files", "pyflakes (subprocess)", "flake8 -j1 without plugin",
                   "flake8 -j1 + plugin, cold", "flake8 -j1 + plugin, warm",
-                  "flake8 -j1 + plugin, one file changed", "graph command"):
+                  "flake8 -j1 + plugin, one file changed", "flake8 --jobs=auto without plugin",
+                  "flake8 --jobs=auto + plugin, cold", "graph command"):
         assert f"| {label}" in table, label
     lines = sum(len(data.splitlines()) for data in files.values())
     assert f"— 3 files, {lines} lines;" in table
     assert "| flake8 + plugin cold ÷ flake8 without |" in table
+    assert "| --jobs=auto cold ÷ --jobs=auto without (wall) |" in table
+    assert re.search(r"^\d{4}-\d\d-\d\d \d\d:\d\d UTC; machine: ", table, re.MULTILINE)
 
     data = json.loads(out.read_text())
     steps = data["workspace"]["steps"]
-    assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed", "graph"]
+    assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed",
+                           "flake8-auto", "cold-auto", "graph"]
     assert steps["graph"]["result"] == "2 nodes, 0 diagnostics"
     # The subscription to 'unheard' has no publisher: the plugin ran and reported in every plugin row,
     # and the baseline did not.
     ros_reported = {key: int(re.search(r"(\d+) ROS", step["result"]).group(1))
-                    for key, step in steps.items() if key in ("flake8", "cold", "warm", "changed")}
-    assert ros_reported["flake8"] == 0
+                    for key, step in steps.items()
+                    if key in ("flake8", "cold", "warm", "changed", "flake8-auto", "cold-auto")}
+    assert ros_reported["flake8"] == ros_reported["flake8-auto"] == 0
     assert ros_reported["cold"] > 0
-    assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"]
+    assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"] == ros_reported["cold-auto"]
     assert all(step["peak_mb"] is None or step["peak_mb"] > 0 for step in steps.values())
 
     # The benchmark works on a copy: no cache, no edit in the measured directory.

@@ -6,6 +6,8 @@ even internal errors become diagnostics on the returned graph.
 """
 from __future__ import annotations
 
+import contextlib
+import gc
 import traceback
 from importlib.resources import files
 from pathlib import Path
@@ -87,13 +89,35 @@ def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
                                               f"{type(exc).__name__}: {exc}", "error"))
 
 
+@contextlib.contextmanager
+def collector_paused():
+    """Python's cyclic garbage collector off for the block, as it was after.
+
+    The analysis allocates millions of small objects that live until it ends and
+    form no garbage cycles, so every collection the allocations trigger scans an
+    ever-growing heap for nothing (a quarter of the run time on a large workspace).
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
                 interface_dirs: Sequence[Path] = (), buffers: Buffers = ()) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
     ``buffers``: unsaved editor content that replaces files on disk."""
-    root = Path(root)
+    with collector_paused():
+        return _build_graph(Path(root), stub_files, interface_dirs, buffers)
+
+
+def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
+                 buffers: Buffers) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -111,6 +135,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = (),
         _cpp_nodes(root, graph, diagnostics)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
         _interfaces(root, interface_dirs, graph, analysis, diagnostics)
+        analysis.close()  # frees the analysis by reference counting, not a later collection
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "

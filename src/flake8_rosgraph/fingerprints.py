@@ -15,6 +15,8 @@ from collections import Counter
 from pathlib import Path
 from typing import Hashable
 
+from .safe_io import MAX_SOURCE_BYTES, read_bytes
+
 _LINE_REF = re.compile(r"(\.[A-Za-z]+):\d+\b")
 
 
@@ -27,8 +29,8 @@ class SourceLines:
     def raw(self, path: Path, line: int) -> str:
         """The line as written (no line break); empty when the file or line does not exist."""
         if path not in self._lines:
-            try:
-                self._lines[path] = path.read_text(encoding="utf-8", errors="replace").splitlines()
+            try:  # the workspace's one safe opener: no FIFO, device or huge file
+                self._lines[path] = read_bytes(path, None, MAX_SOURCE_BYTES).decode("utf-8", "replace").splitlines()
             except OSError:
                 self._lines[path] = []
         lines = self._lines[path]

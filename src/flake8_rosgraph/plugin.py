@@ -7,6 +7,11 @@ located in this file (when flake8 checks only some files, also the broken
 connections whose other end is here: :mod:`.partial_runs`). flake8 then applies ``# noqa``, ``--select``/``--ignore``
 and ``--per-file-ignores`` as for any plugin.
 
+With ``--jobs`` above 1 the workers' checkers report nothing: the main process
+analyses beside them and adds each file's results before the report stage (see
+:mod:`.flake8_jobs`). When ``--select``/``--ignore`` leave no ROS code, nothing is
+analysed at all.
+
 The checker never raises: an internal error becomes a ``ROS000`` finding at
 line 1 (``--rosgraph-debug`` / ``ROSGRAPH_DEBUG=1`` re-raises instead). A
 workspace-level failure would hit every checked file, so the report hook keeps
@@ -31,7 +36,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
-from . import __version__
+from . import __version__, flake8_jobs
 from .cache import WorkspaceReport, start_run, workspace_report
 from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
@@ -53,6 +58,8 @@ class _Run:
     codes: CodeFilter
     #: Why the options could not be used, reported as ROS000 on each checked file.
     error: str | None = None
+    #: Whether flake8 could report any ROS code at all (``--select E,W``: no analysis).
+    selected: bool = True
     roots: dict[Path, Path] = field(default_factory=dict, compare=False)
     #: flake8 reads the checked file from standard input (``flake8 -``): an editor's unsaved buffer.
     stdin: bool = False
@@ -225,14 +232,17 @@ class RosGraphChecker:
         try:
             from .rules import RULES
 
+            codes = CodeFilter.build(flake8_selectors(options), RULES)
             stdin = list(getattr(options, "filenames", None) or []) == ["-"]
-            _RUN = _Run(settings, CodeFilter.build(flake8_selectors(options), RULES), stdin=stdin,
+            _RUN = _Run(settings, codes, selected=_ros_selected(options, codes, RULES), stdin=stdin,
                         checked=CheckedFiles.from_flake8(options))
         except Exception as exc:
             if settings.debug:
                 raise
             _RUN = _Run(settings, CodeFilter(), error=_describe(exc))
         _install_report_hook()
+        flake8_jobs.install(lambda filename: checker_results(_current_run(), filename),
+                            lambda: _RUN is not None and _RUN.error is None and _RUN.selected)
 
     def run(self) -> Iterator[tuple[int, int, str, type]]:
         try:
@@ -240,23 +250,41 @@ class RosGraphChecker:
         except Exception as exc:  # not even the rules could be imported
             yield 1, 0, _internal_error_text(_describe(exc)), type(self)
             return
-        try:
-            if run.error is not None:
-                raise RuntimeError(run.error)
-            _note_buffer(run, self.filename, self.lines)
-            findings = findings_in_file(run, self.filename)
-            errors = analysis_errors(run, self.filename)
-        except Exception as exc:
-            if run.settings.debug:
-                raise
-            yield 1, 0, _internal_error_text(_describe(exc)), type(self)
-            return
-        for error in errors:
-            yield 1, 0, escape_text(_analysis_error_text(error)), type(self)
-        root = _root_for(run, Path(os.path.abspath(self.filename)))
-        for finding in findings:
-            text = escape_text(f"{finding.code} {localised_message(root, finding)}")
-            yield finding.location.line, finding.location.column - 1, text, type(self)
+        if not run.selected or flake8_jobs.deferred():
+            return  # nothing could be reported, or the main process adds it (flake8 -jN)
+        _note_buffer(run, self.filename, self.lines)
+        for line, column, text in checker_results(run, self.filename):
+            yield line, column, text, type(self)
+
+
+def checker_results(run: _Run, filename: str) -> list[tuple[int, int, str]]:
+    """What the checker reports for ``filename``: ``(line, 0-based column, "CODE text")``."""
+    try:
+        if run.error is not None:
+            raise RuntimeError(run.error)
+        findings = findings_in_file(run, filename)
+        errors = analysis_errors(run, filename)
+    except Exception as exc:
+        if run.settings.debug:
+            raise
+        return [(1, 0, _internal_error_text(_describe(exc)))]
+    root = _root_for(run, Path(os.path.abspath(filename)))
+    return ([(1, 0, escape_text(_analysis_error_text(error))) for error in errors]
+            + [(f.location.line, f.location.column - 1, escape_text(f"{f.code} {localised_message(root, f)}"))
+               for f in findings])
+
+
+def _ros_selected(options: Any, codes: CodeFilter, rules: Any) -> bool:
+    """Whether flake8's ``--select``/``--ignore`` (and the off-by-default opt-ins) leave any
+    ROS code to report; ``--per-file-ignores`` only ever removes more. Unsure: yes."""
+    try:
+        from flake8.style_guide import Decision, DecisionEngine
+
+        decider = DecisionEngine(options)
+        candidates = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
+        return any(codes(code) and decider.decision_for(code) is Decision.Selected for code in candidates)
+    except Exception:
+        return True
 
 
 # -- the report stage ------------------------------------------------------------------------

@@ -14,7 +14,10 @@ depend on no absolute path and no line number; ``automationDetails.id`` names
 the category. Codes of other flake8 plugins get a rule entry with what is known
 of them (the plugin's name and version).
 
-This is the only module that imports ``sarif_om`` / ``jschema_to_python``.
+This is the only module that imports ``sarif_om``. The object model is turned
+into JSON by :func:`plain`, which writes what ``jschema_to_python.to_json``
+writes, in the same order, without its deep copy of every object at every
+level and its JSON round trip (most of the sidecar's cost before).
 """
 from __future__ import annotations
 
@@ -22,12 +25,13 @@ import inspect
 import json
 import os
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 from urllib.parse import quote
 
+import attr
 import sarif_om as om
-from jschema_to_python.to_json import to_json
 
 from .escaping import escape_text, json_safe
 from . import __version__
@@ -188,17 +192,26 @@ class _Artifacts:
     def __init__(self, srcroot: Path) -> None:
         self.srcroot = Path(os.path.abspath(srcroot))
         self._lines = SourceLines()
+        self._uris: dict[Path, tuple[str, str | None]] = {}
 
     def location(self, path: Path) -> om.ArtifactLocation:
-        path = Path(os.path.abspath(path))
-        try:
-            relative = path.relative_to(self.srcroot)
-        except ValueError:
-            return om.ArtifactLocation(uri=path.as_uri())
-        return om.ArtifactLocation(uri=quote(relative.as_posix()), uri_base_id=SRCROOT)
+        uri, base = self._uri_and_base(path)
+        return om.ArtifactLocation(uri=uri) if base is None else om.ArtifactLocation(uri=uri, uri_base_id=base)
 
     def uri(self, path: Path) -> str:
-        return self.location(path).uri
+        return self._uri_and_base(path)[0]
+
+    def _uri_and_base(self, path: Path) -> tuple[str, str | None]:
+        """Worked out once per file: a log names each file many times."""
+        known = self._uris.get(path)
+        if known is None:
+            absolute = Path(os.path.abspath(path))
+            try:
+                known = (quote(absolute.relative_to(self.srcroot).as_posix()), SRCROOT)
+            except ValueError:
+                known = (absolute.as_uri(), None)
+            self._uris[path] = known
+        return known
 
     def line_text(self, place: Place) -> str:
         return self._lines.text(place.path, place.line)
@@ -318,7 +331,7 @@ def sarif_log(
         driver = om.ToolComponent(name=name, version=origin.version if origin else None)
         runs.append(_run(driver, infos, tool_problems, artifacts, f"{category}/{name}",
                          om.Invocation(execution_successful=True)))
-    log = json.loads(to_json(om.SarifLog(version="2.1.0", schema_uri=SCHEMA_URI, runs=runs)))
+    log = plain(om.SarifLog(version="2.1.0", schema_uri=SCHEMA_URI, runs=runs))
     # to_json drops values equal to the schema default ("warning"), but GitHub
     # reads levels literally: put them back.
     for run, data in zip(runs, log["runs"]):
@@ -327,6 +340,50 @@ def sarif_log(
         for result, original in zip(data.get("results", []), run.results):
             result["level"] = original.level
     return log
+
+
+def plain(obj: Any) -> Any:
+    """``obj`` (a ``sarif_om`` object, or lists, dicts and scalars of them) as JSON data.
+
+    The rules of ``jschema_to_python``: an attribute equal to its declared default
+    is left out, attributes with a schema name are written under it — after the
+    others, as that library re-inserts them — and anything JSON cannot hold is
+    written as ``str()``.
+    """
+    if isinstance(obj, (str, int, float, bool)) or obj is None:
+        return obj
+    if isinstance(obj, (list, tuple)):
+        return [plain(item) for item in obj]
+    if isinstance(obj, dict):
+        return {key: plain(value) for key, value in obj.items()}
+    if not attr.has(type(obj)):
+        return str(obj)
+    fields = _fields(type(obj))
+    out: dict[str, Any] = {}
+    renamed: list[tuple[str, Any]] = []
+    for name, value in vars(obj).items():
+        field = fields.get(name)
+        if field is not None and value == _default(field):
+            continue
+        schema_name = field.metadata.get("schema_property_name") if field is not None else None
+        if schema_name and schema_name != name:
+            renamed.append((name, value))
+        else:
+            out[name] = plain(value)
+    order = list(fields)
+    for name, value in sorted(renamed, key=lambda item: order.index(item[0])):
+        out[fields[name].metadata["schema_property_name"]] = plain(value)
+    return out
+
+
+@lru_cache(maxsize=None)
+def _fields(cls: type) -> dict[str, Any]:
+    return {field.name: field for field in attr.fields(cls)}
+
+
+def _default(field: Any) -> Any:
+    default = field.default
+    return default.factory() if isinstance(default, attr.Factory) else default  # type: ignore[arg-type]
 
 
 def _origin_for(code: str, origins: Mapping[str, Origin]) -> Origin | None:

@@ -60,6 +60,35 @@ def test_every_object_gets_its_own_constructor_analysis(tmp_path):
     assert created == sorted(names)
 
 
+def test_a_base_class_helper_keeps_every_nodes_parameters(tmp_path):
+    """A fleet of nodes, each declaring its own parameters through one helper of their base
+    class: more calls of the helper than the context bound in all, few per node."""
+    kinds = [f"sensor{i}" for i in range(12)]
+    analysis = run(tmp_path, {
+        "fleet/__init__.py": "",
+        "fleet/base.py": """
+            from rclpy.node import Node
+            class FleetNode(Node):
+                def __init__(self, name):
+                    super().__init__(name)
+                def float_parameter(self, name, default):
+                    self.declare_parameter(name, default)
+                    return self.get_parameter(name).value
+        """,
+        "fleet/members.py": "import rclpy\nfrom fleet.base import FleetNode\n"
+                            "class Member(FleetNode):\n"
+                            "    def __init__(self, kind):\n"
+                            "        super().__init__(kind)\n"
+                            "        self.rate = self.float_parameter(kind + '_rate', 10.0)\n"
+                            "        self.gain = self.float_parameter(kind + '_gain', 0.5)\n"
+                            + "".join(f"m{i} = Member('{k}')\n" for i, k in enumerate(kinds)),
+    })
+    declared = sorted(s for e in analysis.all_effects() if e.kind == "parameter"
+                      for s in e.arg("name").strings() or [None])
+    assert declared == sorted(f"{k}_{p}" for k in kinds for p in ("rate", "gain"))
+    assert not any("more than 8 different ways" in d.message for d in analysis.diagnostics)
+
+
 def test_too_many_contexts_widen_arguments_and_say_so(tmp_path):
     calls = "".join(f"make('t{i}')\n" for i in range(12))
     analysis = run(tmp_path, {"m.py": "import rclpy\nnode = rclpy.create_node('n')\n"
@@ -86,3 +115,34 @@ def test_counters_in_callbacks_are_widened_not_counted_up(tmp_path):
     counts = [v for k, v in analysis.heap.items() if k[0] == "a" and k[2] == "count"]
     assert counts and counts[0].is_top
     assert analysis.task_runs < 15  # not one run per value of the counter
+
+
+def test_the_analysis_leaves_no_garbage_cycle_and_restores_the_collector(tmp_path):
+    """The analysis runs with the cyclic collector paused and must be freed by reference
+    counting: a cycle through it would keep every heap value, AST and CFG alive until a
+    full collection later in flake8's own checks."""
+    import gc
+    import weakref
+    from flake8_rosgraph.analysis import _build_graph, collector_paused
+
+    for rel, text in FILES.items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(textwrap.dedent(text))
+    created = []
+    original = Analysis.__init__
+
+    def remember(self, *args, **kwargs):
+        original(self, *args, **kwargs)
+        created.append(weakref.ref(self))
+
+    gc.collect()
+    Analysis.__init__ = remember
+    try:
+        with collector_paused():
+            assert not gc.isenabled()
+            graph = _build_graph(tmp_path, ())
+            assert created and created[0]() is None, "the analysis outlived build_graph"
+    finally:
+        Analysis.__init__ = original
+    assert gc.isenabled()
+    assert graph.nodes

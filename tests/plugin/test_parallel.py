@@ -2,12 +2,13 @@
 from __future__ import annotations
 
 import json
+import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from .conftest import EXPECTED_STANDARD, analyses, fake_env, parse_flake8, run_flake8
+from .conftest import _FLAKE8_UNDER, EXPECTED_STANDARD, analyses, fake_env, parse_flake8, run_flake8
 
 
 @pytest.fixture(params=[pytest.param("current", id="flake8-current"),
@@ -62,3 +63,44 @@ def test_sidecar_holds_what_the_terminal_shows(python: str, workspace: Path, tmp
                    r["locations"][0]["physicalLocation"]["region"]["startColumn"], r["ruleId"]) for r in results)
     assert rows == parse_flake8(plain.stdout)
     assert {row[3] for row in rows} >= {"ROS001", "ROS002", "ROS003"}
+
+
+@pytest.mark.parametrize("method", ["fork", "spawn", "forkserver"])
+def test_with_jobs_the_main_process_analyses_and_no_worker_waits(python: str, workspace: Path,
+                                                                 tmp_path: Path, method: str) -> None:
+    """flake8 -j2: the one analysis runs in flake8's main process (beside the workers), so
+    no worker ever blocks on the cache lock; the findings are those of -j1."""
+    log = tmp_path / "analyses.log"
+    child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, method, "--isolated", "--jobs", "2",
+                              "--select", "ROS", "."], cwd=workspace, env=fake_env(log),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = child.communicate(timeout=600)
+    assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
+    assert [line.split()[0] for line in analyses(log)] == [str(child.pid)]
+
+
+def test_noqa_on_a_later_line_of_the_statement_works_the_same_with_jobs(python: str, workspace: Path,
+                                                                         tmp_path: Path) -> None:
+    """Results added by the main process get flake8's own ``noqa`` line for their position."""
+    talker = workspace / "src/pkg_a/pkg_a/talker.py"
+    talker.write_text(talker.read_text() + "    node.create_publisher(String, 'quiet',\n"
+                                           "                          10)  # noqa: ROS001\n"
+                                           "    node.create_publisher(String, 'loud',\n"
+                                           "                          10)\n")
+    log = tmp_path / "analyses.log"
+    serial = run_flake8(["--jobs", "1", "--select", "ROS", "."], workspace, fake_env(log), python)
+    parallel = run_flake8(["--jobs", "2", "--select", "ROS", "."], workspace, fake_env(log), python)
+    assert parallel.stdout == serial.stdout, (serial.stderr, parallel.stderr)
+    assert ("src/pkg_a/pkg_a/talker.py", 11, 10, "ROS001") in parse_flake8(parallel.stdout)
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+@pytest.mark.parametrize("select", [["--select", "E,W"], ["--extend-ignore", "ROS"], ["--select", "F,ROS9"]])
+def test_no_analysis_when_no_ros_code_can_be_reported(python: str, workspace: Path, tmp_path: Path,
+                                                      jobs: str, select: list[str]) -> None:
+    log = tmp_path / "analyses.log"
+    result = run_flake8(["--jobs", jobs, *select, "."], workspace, fake_env(log), python)
+    assert result.returncode in (0, 1), result.stderr
+    assert "ROS" not in result.stdout
+    assert analyses(log) == []
+    assert not (workspace / ".rosgraph-cache").exists()

@@ -136,3 +136,32 @@ def test_output_is_deterministic(tmp_path: Path) -> None:
     texts = {dumps(sarif_log(p, catalogue(), srcroot=root, category="test")) for p in (problems, shuffled)}
     assert len(texts) == 1
     assert json.loads(texts.pop())["version"] == "2.1.0"
+
+
+def test_serialisation_is_byte_identical_to_jschema_to_python(tmp_path: Path, monkeypatch) -> None:
+    """The log of the example workspace — every rule's descriptor, findings with related
+    locations, foreign codes, tool notifications — written by :func:`sarif.plain` and by
+    the reference serialiser ``jschema_to_python.to_json`` it replaces: the same bytes."""
+    import jschema_to_python.to_json as reference
+
+    from flake8_rosgraph import sarif
+    from flake8_rosgraph.cache import build_report
+    from flake8_rosgraph.options import Settings
+
+    root = Path(__file__).resolve().parents[2] / "examples"
+    report = build_report(root, Settings.resolve({}, {}))
+    assert report.findings, "the example workspace has findings to write"
+    problems = [finding_problem(root, f) for f in report.findings] + [
+        Problem(Place(root / "src" / "x.py", 3, 1), "F401", "'os' imported but unused"),
+        Problem(Place(root / "src" / "x.py", 4, 80), "E501", "line too long (88 > 79 characters)")]
+    origins = {"F": Origin("pyflakes", "3.2.0"), "E": Origin("pycodestyle", "2.12.1")}
+    diagnostics = [(root, d) for d in report.diagnostics] + [
+        (root, Diagnostic("src/y.py", 2, "syntax error: invalid syntax", "warning"))]
+
+    def log() -> str:
+        return dumps(sarif_log(problems, catalogue(), srcroot=root, category="examples",
+                               origins=origins, diagnostics=diagnostics))
+
+    ours = log()
+    monkeypatch.setattr(sarif, "plain", lambda obj: json.loads(reference.to_json(obj)))
+    assert ours == log()

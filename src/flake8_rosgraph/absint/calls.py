@@ -50,6 +50,8 @@ class CallSemantics:
         if func.is_top:
             self._escape(args)
             return TOP
+        if len(func.atoms) == 1:  # the common case: nothing to order
+            return self._call_atom(next(iter(func.atoms)), args, node)
         out = BOTTOM
         for atom in sorted(func, key=repr):
             out = out.join(self._call_atom(atom, args, node))
@@ -449,6 +451,9 @@ class CallSemantics:
             return const(None)
         if name == "print":
             return const(None)
+        if name in ("exec", "eval") and node is not None:
+            self.not_followed(node, f"{name}() runs code the analysis does not follow: what it "
+                                    "creates is not in the graph")
         self._escape(args)
         return TOP
 

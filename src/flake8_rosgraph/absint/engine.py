@@ -11,6 +11,15 @@ a cell is re-run when the cell grows, so the whole program reaches a joint fixpo
 because every cell lives in a lattice of finite height, that always happens.  Budgets
 bound the work anyway and turn a runaway analysis into "unknown" plus a diagnostic.
 
+Budgets are local (see :class:`Account`): the entry points of a module share an
+account charged for the task runs they cause, and an account that overspends stops
+alone, however the others fare: no budget is shared, so no module can use up another
+one's share.  What it still had to analyse becomes unknown — return values ⊤, the
+names of entities its unfinished tasks created unknown — and one diagnostic names the
+module and the function that consumed the budget.  The order of work stays one queue
+for the whole program (results where nothing overspends are those of a plain
+worklist).  The account is the unit a per-module cache would key on.
+
 Entry points are all module top levels, then every module-level function nobody
 called (library code may call it), then every callable a library model says it calls
 back later, then every leaf class derived from a library class marked ``entry`` that
@@ -19,9 +28,10 @@ no analysed code instantiates.
 from __future__ import annotations
 
 import ast
-from collections import deque
-from dataclasses import dataclass, replace
-from typing import Hashable, Iterable
+import itertools
+from collections import Counter, deque
+from dataclasses import dataclass, field, replace
+from typing import Hashable
 
 from .callgraph import CallGraph
 from .library import LibraryModel
@@ -30,6 +40,9 @@ from .values import BOTTOM, TOP, Value
 
 #: Contexts per function before further calls share one all-⊤ context.
 MAX_CONTEXTS = 8
+#: Task runs the entry points of one module may cause before their unfinished work becomes
+#: unknown (the busiest module of navigation2 + ros2cli needs 367).
+ENTRY_TASK_RUNS = 2000
 #: Block visits per task run before the run is abandoned as ⊤.
 MAX_BLOCK_VISITS = 4000
 #: Visits of a loop head before its environment is widened.
@@ -66,6 +79,19 @@ class Diagnostic:
     severity: str = "warning"  # "info" for precision given up on purpose (context bounds)
 
 
+@dataclass(eq=False)
+class Account:
+    """The budget of one module's entry points (its top level, its functions nobody calls,
+    its classes a library instantiates), charged for the task runs they cause: their own
+    analysis, the calls they make, the re-runs their heap writes trigger."""
+
+    module: str
+    runs: int = 0
+    #: Runs per function (fid) or module top level (name): who consumed the budget.
+    spent: Counter = field(default_factory=Counter)
+    exhausted: bool = False
+
+
 class Analysis:
     """Runs the whole-program fixpoint and keeps its results (heap, effects, diagnostics)."""
 
@@ -85,14 +111,24 @@ class Analysis:
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
         self.diagnostics: list[Diagnostic] = []
-        self._queue: deque[Task] = deque()
-        self._queued: set[Task] = set()
         self._known: set[Task] = set()
-        self._exhausted = False
-        #: Tasks whose results had not settled when the budget ran out (see :meth:`all_effects`).
-        self.unsettled: set[Task] = set()
-        size = len(program.functions) + len(program.modules)
-        self.max_task_runs = max_task_runs if max_task_runs is not None else 200 + 60 * size
+        #: Accounts by module name; the work queue; the account each queued task is charged to.
+        self.accounts: dict[str, Account] = {}
+        self._queue: deque[Task] = deque()
+        self._queued: dict[Task, Account] = {}
+        #: The account that first queued each task; a task's re-run falls back to it.
+        self._owner: dict[Task, Account] = {}
+        self._current: Account | None = None
+        #: Tasks left unfinished by an exhausted account: their results are not to be trusted.
+        self.abandoned: set[Task] = set()
+        self._to_abandon: list[Task] = []
+        #: The whole analysis ran out of budget: nothing runs any more.
+        self.stopped = False
+        #: The whole analysis stops here (every account still busy is stopped). By default
+        #: only the accounts bound the work: a shared cap would let one module's runaway
+        #: analysis starve entry points that start later (the functions nobody calls).
+        self.max_task_runs = max_task_runs if max_task_runs is not None \
+            else ENTRY_TASK_RUNS * max(1, len(program.modules))
         self.task_runs = 0
         self.every_module_is_entry = every_module_is_entry
         self.relevant: set[str] = set()
@@ -119,25 +155,42 @@ class Analysis:
 
     # -- tasks ----------------------------------------------------------------------------
     def enqueue(self, task: Task) -> None:
+        """Queue ``task`` on the account that causes it: the running task's; outside any
+        task (an entry point, a re-run caused by abandoning a task), its owner's, else its
+        module's."""
         self._known.add(task)
-        if task not in self._queued:
-            self._queued.add(task)
-            self._queue.append(task)
+        if task in self._queued:
+            return
+        account = self._current or self._owner.get(task) or self._module_account(task)
+        if account.exhausted or self.stopped:
+            self._to_abandon.append(task)
+            return
+        self._owner.setdefault(task, account)
+        self._queued[task] = account
+        self._queue.append(task)
+
+    def _module_account(self, task: Task) -> Account:
+        """The account of the module ``task`` belongs to: all entry points of a module share it."""
+        module = task[1] if task[0] == "mod" else self.program.functions[task[1]].module.name
+        account = self.accounts.get(module)
+        if account is None:
+            account = self.accounts[module] = Account(module)
+        return account
 
     def function_task(self, fid: int, ctx: tuple) -> Task:
         """The task for calling ``fid`` with ``ctx``, registering (and bounding) contexts.
 
         A method's receiver is always kept, so every object is analysed as itself. The
-        bound counts the distinct *other* arguments per function — per receiver for
-        ``__init__``, which runs once per object, so that a fleet of nodes built from one
-        class keeps every name. Past the bound the other arguments become ⊤ (and a
-        diagnostic says so once): a logging helper called with a hundred messages costs
-        nine analyses, not a hundred.
+        bound counts the distinct *other* arguments per method and receiver — a fleet of
+        nodes built from one class keeps every node's name, and every parameter a shared
+        helper of the base class declares for each of them — and per function otherwise.
+        Past the bound the other arguments become ⊤ (and a diagnostic says so once): a
+        logging helper called with a hundred messages on one object costs nine analyses,
+        not a hundred.
         """
         func = self.program.functions[fid]
         method = func.cls is not None and func.kind == "function" and len(ctx) > 0
-        per_object = method and getattr(func.node, "name", "") == "__init__"
-        bucket = (fid, ctx[0]) if per_object else (fid,)
+        bucket = (fid, ctx[0]) if method else (fid,)
         rest = ctx[1:] if method else ctx
         seen = self.contexts.setdefault(fid, {})
         counted = self._context_counts.setdefault(bucket, set())
@@ -167,7 +220,7 @@ class Analysis:
         return 0
 
     def run(self) -> None:
-        """Analyse from every entry point until nothing changes (or the budget runs out)."""
+        """Analyse from every entry point until nothing changes (or the budgets run out)."""
         from .interpreter import Interpreter
         self._interp = Interpreter(self)
         self.relevant = set(self.program.modules) if self.every_module_is_entry \
@@ -176,25 +229,34 @@ class Analysis:
             if self.program.ensure(name) is not None:
                 self.enqueue(("mod", name, ()))
         self._drain()
-        while not self._exhausted and (self._uncalled_functions() or self._entry_classes()):
+        while not self.stopped and (self._uncalled_functions() or self._entry_classes()):
             self._drain()
 
     def _drain(self) -> None:
-        while self._queue:
+        """Run queued tasks until none is left, stopping each account at its budget."""
+        queue = self._queue
+        while queue:
             if self.task_runs >= self.max_task_runs:
-                if not self._exhausted:
-                    self._exhausted = True
-                    self.diagnostics.append(Diagnostic(
-                        "", 0, f"analysis budget of {self.max_task_runs} task runs exhausted; "
-                        "results may be incomplete"))
-                self.unsettled |= self._dependents(self._queue)
-                self._queue.clear()
-                self._queued.clear()
+                self.stopped = True
+                for account in dict.fromkeys(self._queued.values()):
+                    self._exhaust(account, f"the workspace's budget of {self.max_task_runs} "
+                                           "task runs ran out")
                 return
-            task = self._queue.popleft()
-            self._queued.discard(task)
+            task = queue.popleft()
+            account = self._queued.pop(task)
+            if account.runs >= ENTRY_TASK_RUNS:
+                queue.appendleft(task)
+                self._queued[task] = account
+                self._exhaust(account, f"its budget of {ENTRY_TASK_RUNS} task runs ran out")
+                continue
             self.task_runs += 1
-            ret, effects, calls, falls_off = self._interp.run_task(task)
+            account.runs += 1
+            account.spent[task[1]] += 1
+            self._current = account
+            try:
+                ret, effects, calls, falls_off = self._interp.run_task(task)
+            finally:
+                self._current = None
             self.effects[task] = effects
             self.calls[task] = calls
             if falls_off:
@@ -203,6 +265,46 @@ class Analysis:
                 self.falls_off.discard(task)
             if task[0] == "fn":
                 self.write(("ret", task), ret)
+            self._abandon_pending()
+
+    def _exhaust(self, account: Account, why: str) -> None:
+        """Stop ``account``: its queued tasks are abandoned, and a diagnostic says where."""
+        account.exhausted = True
+        mine = [task for task in self._queue if self._queued[task] is account]
+        if mine:
+            kept = [task for task in self._queue if self._queued[task] is not account]
+            self._queue.clear()
+            self._queue.extend(kept)
+            for task in mine:
+                del self._queued[task]
+        self._to_abandon.extend(mine)
+        hottest, runs = min(account.spent.items(), key=lambda item: (-item[1], str(item[0])),
+                            default=(account.module, 0))
+        name, path, line = self._place(hottest)
+        self.diagnostics.append(Diagnostic(
+            path, line, f"analysis from the entry points of module {account.module} stopped: "
+                        f"{why}, the most ({runs}) in {name} (line {line}); what they create may "
+                        "be incomplete and its names are unknown"))
+        self._abandon_pending()
+
+    def _place(self, key: int | str) -> tuple[str, str, int]:
+        """``(name, path, line)`` of a function (by fid) or a module top level (by name)."""
+        if isinstance(key, int):
+            func = self.program.functions[key]
+            return func.qualname, func.module.path, getattr(func.node, "lineno", 1)
+        module = self.program.modules[key]
+        return f"module {key}", module.path, 1
+
+    def _abandon_pending(self) -> None:
+        """Tasks an exhausted account still had to (re-)run: their return values become ⊤
+        (callers elsewhere must not take a partial summary for a complete one)."""
+        while self._to_abandon:
+            task = self._to_abandon.pop()
+            if task in self.abandoned:
+                continue
+            self.abandoned.add(task)
+            if task[0] == "fn":
+                self.write(("ret", task), TOP)  # readers re-run on their own accounts
 
     def relevant_modules(self) -> set[str]:
         """Modules that import an active library (see :meth:`LibraryModel.active_roots`), or a
@@ -250,16 +352,10 @@ class Analysis:
         if task not in self._known:
             self.enqueue(task)
 
-    def _dependents(self, tasks: Iterable[Task]) -> set[Task]:
-        """``tasks`` and every task that read a return value of one of them, transitively."""
-        out = set(tasks)
-        todo = list(out)
-        while todo:
-            for reader in self.readers.get(("ret", todo.pop()), ()):
-                if reader not in out:
-                    out.add(reader)
-                    todo.append(reader)
-        return out
+    def close(self) -> None:
+        """Drop the interpreter: it and the analysis refer to each other, a cycle that would
+        keep every analysis object alive until the garbage collector finds it."""
+        self._interp = None
 
     # -- results --------------------------------------------------------------------------
     def call_graph(self) -> CallGraph:
@@ -274,17 +370,31 @@ class Analysis:
     def all_effects(self) -> list[Effect]:
         """Effects of the latest run of every task, deduplicated, in a stable order.
 
-        An effect of a task that had not settled when the budget ran out may hold
-        a partial set of strings (a recursive name builder cut half-way): its
-        string arguments become ⊤, "unknown", never a partial set read as complete.
-        """
+        The effects of an abandoned task come from a run on inputs that were still
+        growing: their names may be a part of the real ones, so they become unknown."""
         seen: dict[Effect, None] = {}
         for task, effects in self.effects.items():
+            unfinished = task in self.abandoned
             for eff in effects.values():
-                if task in self.unsettled:
-                    eff = replace(eff, args=tuple((k, TOP if v.strings() else v) for k, v in eff.args))
-                seen[eff] = None
-        return sorted(seen, key=lambda e: (e.path, e.line, e.column, e.kind, repr(e.args)))
+                seen[_with_unknown_names(eff) if unfinished else eff] = None
+        # Sorted by place and kind; only effects tied on those are ordered by their arguments'
+        # text (the same order as sorting everything by it, without its cost).
+        out: list[Effect] = []
+        for _, tied in itertools.groupby(sorted(seen, key=_place_and_kind), key=_place_and_kind):
+            group = list(tied)
+            out += group if len(group) == 1 else sorted(group, key=lambda e: repr(e.args))
+        return out
+
+
+def _place_and_kind(effect: Effect) -> tuple[str, int, int, str]:
+    return effect.path, effect.line, effect.column, effect.kind
+
+
+def _with_unknown_names(effect: Effect) -> Effect:
+    """``effect`` with every argument made only of constants (names, types, periods) ⊤;
+    the objects it acts on (the node, the target) stay known."""
+    return replace(effect, args=tuple((key, TOP if value.consts() is not None else value)
+                                      for key, value in effect.args))
 
 
 def _numbers_only(value: Value) -> bool:

@@ -75,6 +75,13 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             frame.module.cfg = build_cfg(frame.module.tree.body)
         return frame.module.cfg
 
+    def not_followed(self, node: ast.AST, message: str) -> None:
+        """A diagnostic at ``node``: Python the analysis does not follow (``exec``, a
+        metaclass of the workspace), so what it would create is missing."""
+        from .engine import Diagnostic
+        self.an.diagnostics.append(Diagnostic(self.frame.module.path, getattr(node, "lineno", 1),
+                                              message))
+
     def _diag(self, frame: Frame, message: str) -> None:
         from .engine import Diagnostic
         node = frame.func.node if frame.func else None
@@ -230,7 +237,10 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         klass = self.program.classes[cid]
         bases = tuple(self.eval(b) for b in op.bases) or (atoms([Extern("builtins.object")]),)
         for kw in op.keywords:
-            self.eval(kw.value)
+            value = self.eval(kw.value)
+            if kw.arg == "metaclass" and any(isinstance(a, ClassAtom) for a in value):
+                self.not_followed(op, f"the metaclass of {klass.qualname} is not followed: its "
+                                      "instances are analysed as if the class were built by type")
         self.an.write(("bases", cid), atoms([Seq("tuple", bases)]))
         outer = self.frame
         inner = Frame(outer.task, outer.module, outer.func, klass, effects=outer.effects,

@@ -1,0 +1,168 @@
+"""flake8 -jN: the workspace analysis runs beside flake8's workers, never inside one.
+
+With ``--jobs`` above 1 flake8 checks files in a pool of worker processes. If the
+checker analysed the workspace there (as it does with ``-j1``), the first worker to
+need the findings would analyse while every other worker waited on the cache lock
+for its first file: the analysis would sit on the critical path, alone on one core.
+
+Instead, during ``Manager.run_parallel`` the main process analyses in a thread it
+starts right after the pool has started its workers (so no worker inherits a
+half-done analysis or a held lock), while the workers check files; their checkers
+report nothing (:func:`deferred`). Once the pool is done, the main process adds each
+file's ROS results to the results the workers sent back — the same code, line,
+column and text the checker would have yielded, with the ``noqa`` line flake8's file
+processor gives — before flake8 filters and reports them as usual.
+
+Works with the fork, spawn and forkserver start methods (spawned workers learn of
+the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 4.0.1
+(``Manager.checkers``) to 7.x (``Manager.filenames`` / ``Manager.results``).
+"""
+from __future__ import annotations
+
+import functools
+import multiprocessing
+import os
+import threading
+from typing import Any, Callable, Iterator
+
+#: Set by the main process for the workers of its pool: "the ROS results are mine".
+DEFER_ENV = "ROSGRAPH_DEFERRED_TO"
+#: flake8's codes for a file it could not read or parse: the plugin never runs there.
+_UNCHECKED = frozenset({"E902", "E999"})
+
+_deferring = False  # in the main process during run_parallel (forked workers inherit it)
+
+Results = list  # of (line, column, text) as a checker yields them
+
+
+def deferred() -> bool:
+    """Whether ROS results of this process's checkers are added by the main process."""
+    return _deferring or (os.environ.get(DEFER_ENV) is not None
+                          and multiprocessing.parent_process() is not None)
+
+
+def install(results_of: Callable[[str], Results], wanted: Callable[[], bool]) -> None:
+    """Wrap ``Manager.run_parallel``: ``results_of(filename)`` is what the checker would
+    yield for a file; ``wanted()`` says whether the current run needs any of it."""
+    from flake8 import checker
+
+    original = checker.Manager.run_parallel
+    if getattr(original, "_rosgraph_hook", False):
+        return
+
+    @functools.wraps(original)
+    def run_parallel(self: Any) -> Any:
+        if not wanted():
+            return original(self)
+        return _run_parallel(self, original, results_of)
+
+    run_parallel._rosgraph_hook = True  # type: ignore[attr-defined]
+    checker.Manager.run_parallel = run_parallel
+
+
+class _Analysis:
+    """The ROS results of every checked file, computed in a background thread."""
+
+    def __init__(self, filenames: list[str], results_of: Callable[[str], Results]) -> None:
+        self.filenames = filenames
+        self.results_of = results_of
+        self.results: dict[str, Results] = {}
+        self.error: BaseException | None = None
+        self._thread = threading.Thread(target=self._run, name="rosgraph-analysis", daemon=True)
+
+    def start(self) -> None:
+        if self._thread.ident is None:
+            self._thread.start()
+
+    def wait(self) -> dict[str, Results]:
+        self.start()
+        self._thread.join()
+        if self.error is not None:
+            raise self.error
+        return self.results
+
+    def _run(self) -> None:
+        try:
+            for filename in self.filenames:
+                self.results[filename] = self.results_of(filename)
+        except BaseException as exc:  # re-raised in the main thread (--rosgraph-debug)
+            self.error = exc
+
+
+def _run_parallel(manager: Any, original: Callable[[Any], Any],
+                  results_of: Callable[[str], Results]) -> Any:
+    global _deferring
+    from flake8 import checker
+
+    analysis = _Analysis(list(_checked_files(manager)), results_of)
+    make_pool = checker._try_initialize_processpool
+
+    def pool_then_analysis(*args: Any, **kwargs: Any) -> Any:
+        pool = make_pool(*args, **kwargs)
+        analysis.start()
+        return pool
+
+    previous = os.environ.get(DEFER_ENV)
+    os.environ[DEFER_ENV] = str(os.getpid())
+    _deferring = True
+    checker._try_initialize_processpool = pool_then_analysis
+    try:
+        outcome = original(manager)
+    finally:
+        checker._try_initialize_processpool = make_pool
+        _deferring = False
+        if previous is None:
+            os.environ.pop(DEFER_ENV, None)
+        else:
+            os.environ[DEFER_ENV] = previous
+    _add_results(manager, analysis.wait())
+    return outcome
+
+
+def _checked_files(manager: Any) -> Iterator[str]:
+    if hasattr(manager, "filenames"):  # flake8 >= 5
+        yield from manager.filenames
+    else:  # flake8 4: FileChecker objects
+        yield from (c.filename for c in manager.checkers)
+
+
+def _result_lists(manager: Any) -> Iterator[tuple[str, list]]:
+    """``(filename, the list flake8 reports from)`` for every checked file."""
+    checkers = getattr(manager, "checkers", None)
+    if checkers is not None and not hasattr(manager, "filenames"):  # flake8 4
+        for file_checker in checkers:
+            yield file_checker.display_name, file_checker.results
+    else:
+        for entry in manager.results:
+            yield entry[0], entry[1]
+
+
+def _add_results(manager: Any, found: dict[str, Results]) -> None:
+    for filename, results in _result_lists(manager):
+        mine = found.get(filename)
+        if not mine or any(result[0] in _UNCHECKED for result in results):
+            continue
+        processor = _processor(filename, manager.options)
+        if processor is not None and processor.should_ignore_file():  # "# flake8: noqa"
+            continue
+        for line, column, text in mine:
+            code, message = text.split(" ", 1)
+            results.append((code, line, column, message, _noqa_line(processor, line)))
+
+
+def _processor(filename: str, options: Any) -> Any:
+    from flake8.processor import FileProcessor
+
+    try:
+        return FileProcessor(filename, options)
+    except Exception:  # flake8 reported why (E902); a missing noqa line is all it costs
+        return None
+
+
+def _noqa_line(processor: Any, line: int) -> str | None:
+    if processor is None:
+        return None
+    try:
+        return processor.noqa_line_for(line)
+    except Exception:  # the tokenizer's view of a broken file
+        return None
