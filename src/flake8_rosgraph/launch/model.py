@@ -133,6 +133,9 @@ class System:
     arguments: dict[str, str | None] = field(default_factory=dict)
     problems: list[Diagnostic] = field(default_factory=list)
     instances: list[Instance] = field(default_factory=list)
+    #: The parameter files the system hands to nodes, read (root-relative path → its
+    #: ``launch.param_files.Section`` list); files that could not be read are absent.
+    param_sections: dict[str, list[Any]] = field(default_factory=dict)
 
     @property
     def complete(self) -> bool:

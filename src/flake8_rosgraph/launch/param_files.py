@@ -22,10 +22,11 @@ PARAMS_KEY = "ros__parameters"
 
 @dataclass(frozen=True)
 class Section:
-    """One ``<node pattern>: ros__parameters:`` block."""
+    """One ``<node pattern>: ros__parameters:`` block; ``location`` is its innermost node key."""
 
     pattern: str
     settings: tuple[tuple[str, Any, Location], ...]
+    location: Location
 
     def matches(self, fqn: str) -> bool:
         return _pattern_regex(self.pattern).fullmatch(fqn) is not None
@@ -58,17 +59,18 @@ def _flatten(node: YNode, prefix: str, path: str, out: list[tuple[str, Any, Loca
             out.append((name, value.plain(), Location(path, node.key_lines.get(key, value.line), 1)))
 
 
-def _sections(node: YNode, tokens: list[str], path: str, out: list[Section]) -> None:
+def _sections(node: YNode, tokens: list[str], path: str, out: list[Section], line: int = 1) -> None:
     if not isinstance(node.value, dict):
         return
     for key, value in node.value.items():
+        key_line = node.key_lines.get(key, value.line)
         if key == PARAMS_KEY:
             pattern = "/".join(t.strip("/") for t in tokens if t.strip("/"))
             settings: list[tuple[str, Any, Location]] = []
             _flatten(value, "", path, settings)
-            out.append(Section("/" + pattern, tuple(settings)))
+            out.append(Section("/" + pattern, tuple(settings), Location(path, line if tokens else key_line, 1)))
         else:
-            _sections(value, tokens + [key], path, out)
+            _sections(value, tokens + [key], path, out, key_line)
 
 
 def read_param_file(root: Path, path: str) -> list[Section]:

@@ -31,6 +31,7 @@ from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
+from .ros205_unmatched_parameter_section import UnmatchedParameterSection
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -54,6 +55,7 @@ RULES: tuple[Rule, ...] = (
     IneffectiveRemap(),
     InvalidLaunchName(),
     UnknownParameter(),
+    UnmatchedParameterSection(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
