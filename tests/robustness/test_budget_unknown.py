@@ -46,7 +46,7 @@ def subscriptions(root: Path, budget: int | None) -> tuple[set[str | None], bool
     analysis.run()
     graph = build_graph_from(analysis)
     names = {e.name for n in graph.nodes if n.name in ("fleet", None) for e in n.entities if e.kind == "subscriptions"}
-    return names, analysis._exhausted
+    return names, analysis.stopped or bool(analysis.abandoned)
 
 
 def test_names_are_complete_or_unknown_at_every_budget(tmp_path: Path) -> None:
