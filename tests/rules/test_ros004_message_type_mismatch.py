@@ -70,3 +70,14 @@ def test_topic_and_service_of_the_same_name_are_separate():
     g = graph(node("a", pub("/x", type=STRING), srv("/x", type="std_srvs/srv/Trigger")),
               node("b", sub("/x", type=STRING), cli("/x", type="std_srvs/srv/Trigger")))
     assert codes(g) == []
+
+
+def test_two_working_systems_of_different_types_are_alternatives_not_a_slip():
+    # The same demo twice on one topic: a C++-style pair with images, a Python pair with strings.
+    image = "sensor_msgs/msg/Image"
+    g = graph(node("talker_cpp", pub("/demo", type=image)), node("listener_cpp", sub("/demo", type=image)),
+              node("talker_py", pub("/demo", type=STRING)), node("listener_py", sub("/demo", type=STRING)))
+    assert codes(g) == []
+    # A third end whose type nobody else speaks is still a mismatch.
+    g.nodes.append(node("monitor", sub("/demo", type=INT32)))
+    assert report(g) == ["ROS004 monitor.py:2"]

@@ -28,7 +28,10 @@ class MessageTypeMismatch(Rule):
     Only endpoints whose types are known are compared. A node that creates the
     same endpoint with either type (a run-time choice such as `Twist` on one
     ROS distribution, `TwistStamped` on another) is not reported when one of
-    its choices agrees. The finding is reported
+    its choices agrees. Nor when every type in use on the name has both
+    roles (publishers and subscriptions of that type): those are separate
+    working systems, such as the same demo written in C++ and in Python. The
+    finding is reported
     at each endpoint whose type differs from the type most endpoints of the
     name use (on a tie, the publishers' or servers' type), since that is the
     side most likely wrong; the other side is the related location. When
@@ -76,9 +79,17 @@ class MessageTypeMismatch(Rule):
         # A node that also has an endpoint of the same role with the reference type picks one at run time
         # (``Twist if distro == 'humble' else TwistStamped``): it can be configured to agree.
         configurable = {(id(ep.node), ep.entity.kind) for ep in agreeing}
+        # A type whose publishers have subscribers of that type (servers, clients) is a working
+        # system of its own: two of them on one name are alternative implementations (the same
+        # demo in C++ and in Python), not a slip. Only ends whose type has no partner are reported.
+        roles: dict[str, set[str]] = {}
+        for ep in typed:
+            roles.setdefault(ep.entity.type, set()).add(ep.entity.kind)
+        complete = {t for t, kinds in roles.items() if len(kinds) == 2}
         for ep in typed:
             entity = ep.entity
-            if entity.type == reference or (id(ep.node), entity.kind) in configurable:
+            if entity.type == reference or (id(ep.node), entity.kind) in configurable \
+                    or (entity.type in complete and reference in complete):
                 continue
             # Name the other side when it exists: "subscribed as X but published as Y".
             witness = next((a for a in agreeing if a.entity.kind != entity.kind), agreeing[0]).entity
