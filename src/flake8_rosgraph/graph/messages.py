@@ -99,7 +99,12 @@ class MessageFacts:
 
 
 def shapes(value: Value, analysis: Analysis, depth: int = 0) -> tuple[ValueShape, ...] | None:
-    if value.is_top or depth > 2:
+    """What ``value`` may be, for the field rules; ``None``: not known well enough to judge.
+
+    A *soft* value is a default the environment may override (a parameter's declared
+    default, an argparse default): the running value is unknown, so it is never judged.
+    """
+    if value.is_top or value.soft or depth > 2:
         return None
     return tuple(sorted({_shape(atom, analysis, depth) for atom in value}, key=repr))
 
