@@ -132,3 +132,23 @@ def test_unknown_names_are_not_compared():
     g = graph(node(None, path="x.py", line=1), node(None, path="x.py", line=2),
               node("a", namespace=None, path="x.py", line=3), node("a", namespace=None, path="x.py", line=4))
     assert codes(g, select=["ROS007"]) == []
+
+
+def test_a_launch_name_given_to_an_executable_of_two_nodes_renames_both():
+    # One executable creates a broadcaster and a listener; the launch action names it, so rcl
+    # gives both nodes that name (``__node:=`` applies to every node of the process).
+    broadcaster = node("tf_demo", pub("/tf_demo/pose"), path="demo/demo/nodes.py", line=12)
+    listener = node("tf_demo", sub("/tf_demo/pose"), path="demo/demo/nodes.py", line=40)
+    action = LaunchedNode("demo", "nodes", Location("bringup/demo.launch.xml", 3, 3), "bringup/demo.launch.xml",
+                          name="tf_demo")
+    g = graph(broadcaster, listener)
+    g.systems = [System("bringup/demo.launch.xml",
+                        instances=[Instance(action, broadcaster, broadcaster), Instance(action, listener, listener)])]
+    assert report(g, select=["ROS007"]) == ["ROS007 bringup/demo.launch.xml:3"]
+    (finding,) = findings(g, select=["ROS007"])
+    assert [loc for loc, _ in finding.related] == [Location("demo/demo/nodes.py", 12, 9),
+                                                   Location("demo/demo/nodes.py", 40, 9)]
+    # The same two nodes under their own names, as written: nothing to report.
+    quiet = graph(node("broadcaster", pub("/tf_demo/pose"), path="demo/demo/nodes.py", line=12),
+                  node("listener", sub("/tf_demo/pose"), path="demo/demo/nodes.py", line=40))
+    assert codes(quiet, select=["ROS007"]) == []

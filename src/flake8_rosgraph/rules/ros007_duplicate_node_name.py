@@ -79,11 +79,20 @@ class DuplicateNodeName(Rule):
     def _duplicates(self, fqn: str, nodes: list[RosNode], together: _Together) -> Iterator[Finding]:
         # site -> partner site -> why they run together (the first reason found, in a fixed order)
         partners: dict[Location, dict[Location, str]] = defaultdict(dict)
+        # A launch action naming an executable that creates several nodes renames them all alike.
+        renamed_together: dict[Location, set[Location]] = defaultdict(set)
         for reason, a, b in together.pairs(nodes):
             site_a, site_b = together.site(a), together.site(b)
             if site_a != site_b:
                 partners[site_a].setdefault(site_b, reason)
                 partners[site_b].setdefault(site_a, reason)
+            elif a.location != b.location and site_a != a.location:
+                renamed_together[site_a] |= {a.location, b.location}
+        for site in sorted(renamed_together):
+            created = sorted(renamed_together[site])
+            message = (f"node '{fqn}': this launch action gives its name to every node the executable "
+                       f"creates ({', '.join(c.short() for c in created)}), so they run under one name")
+            yield Finding(site, self.code, message, tuple((c, "node created here") for c in created))
         for site in sorted(partners):
             others = sorted(partners[site])
             first = others[0]
