@@ -104,7 +104,7 @@ def test_findings_of_the_workspace(ws):
             ("ROS202", f"{launch}:{remap}",
              "remap 'unused_topic' -> 'other' matches no name used by any of the 2 nodes it applies to"),
             ("ROS202", f"{launch}:{hear}",
-             "remap 'hear' -> 'chatter' matches no name node '/plain/listener' uses (it uses /plain/heard)"),
+             "remap 'hear' -> 'chatter' matches no name node '/plain/listener' uses (it uses /plain/heard); did you mean '/plain/heard'?"),
             ("ROS201", f"{launch}:{talkr}", "package 'demo_py' has no executable 'talkr'; did you mean 'talker'?"),
             ("ROS203", f"{launch}:{relay}",
              "rcl rejects node name 'relay-1': contains '-' (only alphanumerics and '_' are allowed)"),

@@ -6,10 +6,15 @@ from typing import Iterator
 from ..graph import names
 from ..graph.model import RosGraph
 from ..launch.model import Instance, Remap, System
+from .exempt import ExemptNames
 from .base import Finding, Rule, RuleConfig
 
 #: Names rcl uses on every node without the code asking for them; remapping them is legitimate.
 _IMPLICIT = frozenset({"/rosout", "/parameter_events"})
+
+
+#: The per-node built-in names (``/<node>/get_parameters`` …) of the exempt list.
+_PER_NODE = ExemptNames.build()
 
 
 def _judgeable(instance: Instance, remap: Remap) -> bool:
@@ -23,7 +28,9 @@ def _judgeable(instance: Instance, remap: Remap) -> bool:
     if expanded is None:
         return False  # ROS203 reports an invalid source
     private = names.fqn(node.name, node.namespace) + "/"
-    return expanded not in _IMPLICIT and not expanded.startswith(private)
+    # A private name (``~/x``) is judged like any other, except the services and topics every
+    # node has by itself (parameter, logger, lifecycle services), which the code never creates.
+    return expanded not in _IMPLICIT and not (expanded.startswith(private) and expanded in _PER_NODE)
 
 
 class IneffectiveRemap(Rule):
@@ -44,8 +51,10 @@ class IneffectiveRemap(Rule):
     Only nodes whose code is in the workspace and whose every name is known
     are judged (a C++ node's names are not). A `SetRemap` is reported only
     when it matches no name of any node it applies to. Remaps of the names
-    rcl uses implicitly (`/rosout`, `/parameter_events`, a node's private
-    parameter services) and special rules (`__ns`, `__node`) are not judged.
+    rcl uses implicitly (`/rosout`, `/parameter_events`, a node's built-in
+    parameter, logger and lifecycle services) and special rules (`__ns`,
+    `__node`) are not judged; other private names (`~/status`) are. The
+    message suggests a name the node uses within two edits of the source.
 
     ## Example
     ```python
@@ -102,4 +111,8 @@ class IneffectiveRemap(Rule):
             shown = ", ".join(used[:4]) + (", …" if len(used) > 4 else "")
             message = (f"remap '{remap.source}' -> '{remap.target}' matches no name node "
                        f"'{node.fqn}' uses" + (f" (it uses {shown})" if used else ""))
+            expanded, _ = names.expand_topic_name(remap.source, node.name or "", node.namespace or "/")
+            close = [name for name in used if expanded and names.edit_distance(name, expanded, 2) <= 2]
+            if close:
+                message += f"; did you mean '{close[0]}'?"
         return Finding(remap.location, self.code, message, ((node.location, f"node '{node.fqn}'"),))
