@@ -22,3 +22,17 @@ def test_selected_lists_unresolved_nodes_and_named_entities_only():
         "ROS010 service name of service client cannot be determined statically",
         "ROS010 namespace of node 'x' cannot be determined statically",
     ]
+
+
+def test_the_message_names_the_expression_as_written(tmp_path):
+    """ROS010 quotes the argument the analysis could not evaluate, so the user sees what to fix."""
+    from flake8_rosgraph.analysis import build_graph
+    from flake8_rosgraph.rules import RuleConfig, run_rules
+
+    (tmp_path / "relay.py").write_text(
+        "import sys\nimport rclpy\nfrom std_msgs.msg import String\n\n"
+        "rclpy.init()\nnode = rclpy.create_node('relay')\n"
+        "node.create_publisher(String, sys.argv[1] + '/out', 10)\n"
+        "node.create_subscription(String, topic='/in', callback=print, qos_profile=10)\n")
+    messages = [f.message for f in run_rules(build_graph(tmp_path), RuleConfig(), ["ROS010"])]
+    assert messages == ["topic name of publisher cannot be determined statically: `sys.argv[1] + '/out'`"]

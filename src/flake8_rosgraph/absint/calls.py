@@ -296,19 +296,43 @@ class CallSemantics:
                 bound[param.name] = TOP if args.star or param.default is None else param.default
         return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
 
+    @staticmethod
+    def argument_texts(model: FunctionModel, receiver: Atom | None, node) -> dict[str, str]:
+        """The source text of each argument written at the call ``node``, by parameter name."""
+        if not isinstance(node, ast.Call):
+            return {}
+        positional = [p.name for p in model.signature.params if p.kind == "pos"][1 if receiver is not None else 0:]
+        written: dict[str, ast.expr] = {}
+        for name, arg in zip(positional, node.args):
+            if isinstance(arg, ast.Starred):
+                break
+            written[name] = arg
+        written.update((kw.arg, kw.value) for kw in node.keywords if kw.arg is not None)
+        out = {}
+        for name, expr in written.items():
+            try:
+                text = ast.unparse(expr)
+            except (ValueError, RecursionError):  # a pathological expression: no text, not a failure
+                continue
+            out[name] = text if len(text) <= 80 else text[:77] + "..."
+        return out
+
     def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node) -> Value:
         bound = self.bind_model(model, receiver, args)
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
         frame = self.frame
         recorded = []
+        written = self.argument_texts(model, receiver, node) if model.effects else {}
         for index, spec in enumerate(model.effects):
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
+            texts = tuple((name, written[ref.data]) for name, ref in spec.args
+                          if ref.how == "arg" and ref.data in written)
             key = (id(node), model.qualname, index, receiver)
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,
-                self.conditional_here())
+                self.conditional_here(), texts)
             recorded.append(frame.effects[key])
         self.record_call(node, ("lib", model.qualname), tuple(sorted(bound.items())),
                          tuple(recorded))

@@ -63,6 +63,9 @@ class Effect:
     line: int
     column: int
     conditional: bool
+    #: The source text of arguments given as call arguments (``"topic" → "prefix + '/scan'"``),
+    #: to name an expression the analysis could not evaluate.
+    texts: tuple[tuple[str, str], ...] = ()
 
     def arg(self, name: str) -> Value:
         for key, val in self.args:

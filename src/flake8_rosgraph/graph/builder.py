@@ -240,11 +240,12 @@ class GraphBuilder:
                 else None
             via = eff.arg("via").strings()
             out = []
+            written = dict(eff.texts).get(name_arg)
             for raw in _choices(eff.arg(name_arg)):
                 name, problem = self._resolve(raw, node)
                 out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
                                   callback=callback, invalid=problem,
-                                  via=via[0] if via else None, **common))
+                                  via=via[0] if via else None, name_text=written, **common))
             return out
         if eff.kind == "timer":
             callback = self.callback_name(eff.arg("callback"))

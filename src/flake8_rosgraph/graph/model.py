@@ -58,6 +58,8 @@ class Entity:
     conditional: bool = False
     invalid: str | None = None  # why the name breaks the rcl rules, if it does
     via: str | None = None      # library class that implies this entity (tf2_ros, parameter client)
+    #: The name as written at the creating call (``prefix + '/scan'``), to say what could not be resolved.
+    name_text: str | None = None
 
 
 @dataclass

@@ -62,4 +62,6 @@ class UnresolvedName(Rule):
                 if entity.kind in NAMED_KINDS and entity.name is None:
                     message = (f"{NAME_NOUN[entity.kind]} name of {ENTITY_NOUN[entity.kind]} "
                                f"cannot be determined statically")
+                    if entity.name_text:
+                        message += f": `{entity.name_text}`"
                     yield Finding(entity.location, self.code, message)
