@@ -55,7 +55,14 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
 
 def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
     """The ROS computation graph of the Python code under ``root``; never raises."""
+    return analyse(root, stub_files)[0]
+
+
+def analyse(root: Path, stub_files: Sequence[Path] = ()) -> tuple[RosGraph, Analysis | None]:
+    """The graph and the analysis it was built from (``None`` after an internal error), for
+    callers that explain the graph (``graph --explain``); never raises."""
     root = Path(root)
+    analysis: Analysis | None = None
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -76,5 +83,6 @@ def build_graph(root: Path, stub_files: Sequence[Path] = ()) -> RosGraph:
                                               f"(at {Path(where.filename).name}:{where.lineno})",
                                       "error"))
         graph = RosGraph()
+        analysis = None
     graph.diagnostics = sorted(set(diagnostics))
-    return graph
+    return graph, analysis

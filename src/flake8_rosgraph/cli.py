@@ -16,7 +16,7 @@ from . import __version__, check_cli
 
 
 def _graph(args: argparse.Namespace) -> int:
-    from .analysis import build_graph
+    from .analysis import analyse
     from .graph.dot import to_dot
     from .launch.api import apply, graph_to_json_obj, system_to_json
 
@@ -24,12 +24,14 @@ def _graph(args: argparse.Namespace) -> int:
     if not root.exists():
         print(f"flake8-rosgraph: error: no such file or directory: {args.path}", file=sys.stderr)
         return 2
-    graph = build_graph(root, [Path(s) for s in args.stubs])
+    graph, analysis = analyse(root, [Path(s) for s in args.stubs])
     for diag in graph.diagnostics:
         if diag.severity == "info" and not args.verbose:
             continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(f"{where}{diag.severity}: {diag.message}", file=sys.stderr)
+    if args.explain:
+        _explain(graph, analysis, args.verbose)
     shown = graph
     if args.launch:
         system = _find_system(graph, root, Path(args.launch))
@@ -51,6 +53,20 @@ def _graph(args: argparse.Namespace) -> int:
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _explain(graph, analysis, verbose: bool) -> None:
+    """Creation sites missing from the graph or known only partly, one line each (stderr)."""
+    from .explain import explain
+    if analysis is None:
+        print("flake8-rosgraph: --explain: the analysis did not complete; nothing to explain",
+              file=sys.stderr)
+        return
+    report = explain(analysis, graph)
+    for item in report.gaps():
+        print(item.line(), file=sys.stderr)
+    if verbose:
+        print(report.summary(), file=sys.stderr)
 
 
 def _find_system(graph, root: Path, launch_file: Path):
@@ -76,6 +92,10 @@ def make_parser() -> argparse.ArgumentParser:
                        help="extra library model (TOML); repeatable")
     graph.add_argument("--verbose", "-v", action="store_true",
                        help="also print informational diagnostics (analysis precision bounds)")
+    graph.add_argument("--explain", action="store_true",
+                       help="list on stderr every creation call (node, publisher, subscription, "
+                            "service, client, timer, action) missing from the graph or known only "
+                            "partly, with the reasons; with --verbose, a one-line count")
     graph.add_argument("--launch", metavar="FILE",
                        help="print the system this launch file starts (names, namespaces and "
                             "remappings applied) instead of the code-level graph")

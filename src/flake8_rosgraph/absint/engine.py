@@ -81,6 +81,9 @@ class Analysis:
         self.effects: dict[Task, dict[tuple, Effect]] = {}
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
+        #: Calls evaluated at least once, as (path, line, col_offset): what ``--explain`` reads
+        #: to tell a call the analysis reached from one it never got to.
+        self.reached_calls: set[tuple[str, int, int]] = set()
         self.diagnostics: list[Diagnostic] = []
         self._queue: deque[Task] = deque()
         self._queued: set[Task] = set()

@@ -240,6 +240,7 @@ class ExpressionSemantics:
     e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
 
     def e_Call(self, node: ast.Call) -> Value:
+        self.an.reached_calls.add((self.frame.module.path, node.lineno, node.col_offset))
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
