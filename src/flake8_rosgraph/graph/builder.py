@@ -275,7 +275,14 @@ class GraphBuilder:
             if raw.startswith("/"):
                 check = names.validate_full_topic_name(raw)
                 return raw, None if check.ok else check.reason
-            return None, None
+            if node.namespace is None or raw.startswith("~") or "{node}" in raw:
+                return None, None
+            # A relative name depends on the namespace only: an unknown node name (a
+            # placeholder stands for it) must not make it unknown.
+            expanded, check = names.expand_topic_name(raw, "unknown", node.namespace)
+            if expanded is None:
+                return raw, check.reason
+            return expanded, None if check.ok else check.reason
         expanded, check = names.expand_topic_name(raw, node.name, node.namespace)
         if expanded is None:
             return raw, check.reason
