@@ -271,6 +271,9 @@ class _Explainer:
         if func.cls is not None:
             klass = self.program.classes[func.cls]
             if not self._instantiated(klass.cid):
+                if any((_dotted(b) or "").endswith("TestCase") for b in klass.node.bases):
+                    return (f"class {klass.qualname} is a test case: the test runner "
+                            "instantiates it, analysed code never does")
                 return (f"class {klass.qualname} is never instantiated by analysed code (nor "
                         "registered as a node entry point)")
             return f"method {func.qualname} is never called from any entry point"
