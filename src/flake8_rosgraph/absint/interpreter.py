@@ -206,12 +206,24 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
             self.store_name(alias.asname or alias.name, self.import_member(base, alias.name))
 
     def _star_import(self, base: str) -> None:
+        """``from base import *``: the names of ``__all__`` when the module defines it (read
+        from the heap: this task re-runs when it grows), else its public globals."""
         module = self.program.ensure(base)
         if module is None:
             return  # names from a library star import stay unknown (⊤ on lookup)
-        for name in sorted(module.globals):
-            if not name.startswith("_"):
-                self.store_name(name, self.import_member(base, name))
+        names = [n for n in module.globals | self.program.star_names(module)
+                 if not n.startswith("_")]
+        if "__all__" in module.globals:
+            listed = self.load_global(module, "__all__")
+            if listed.is_bottom:
+                return  # not computed yet
+            strings = self.iter_elem(listed).strings()
+            if strings:
+                names = list(strings)
+        for name in sorted(set(names)):
+            value = self.import_member(base, name)
+            if not value.is_bottom:  # a candidate the source never binds (yet) binds nothing
+                self.store_name(name, value)
 
     def s_FunctionDef(self, op: ast.FunctionDef) -> None:
         for dec in op.decorator_list:
@@ -321,7 +333,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
 
     def load_global(self, module: Module, name: str) -> Value:
         self.program.ensure(module.name)
-        if name in module.globals:
+        if name in module.globals or name in self.program.star_names(module):
             return self.an.read(("g", module.name, name), self.frame.task)
         if name == "__name__":
             return TOP
@@ -341,7 +353,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
             return atoms([ModuleAtom(full)])
         module = self.program.ensure(base)
         if module is not None:
-            return self.load_global(module, name) if name in module.globals else TOP
+            return self.load_global(module, name) \
+                if name in module.globals or name in self.program.star_names(module) else TOP
         return self.extern(full)
 
     def extern(self, qualname: str) -> Value:

@@ -1,0 +1,74 @@
+"""Extraction mechanisms on realistic multi-file packages: each one follows what real code
+does, and one case per mechanism where following it must not invent entities."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from flake8_rosgraph.analysis import build_graph
+
+from test_workspace_discovery import PACKAGE_XML, write
+
+
+def publishers(root: Path) -> dict[str | None, list[str]]:
+    graph = build_graph(root)
+    out: dict[str | None, list[str]] = {}
+    for node in graph.nodes:
+        out.setdefault(node.fqn, []).extend(
+            sorted(e.name or "?" for e in node.entities if e.kind == "publishers"))
+    return out
+
+
+STAR_PACKAGE = {
+    "fleet/package.xml": PACKAGE_XML.format(name="fleet", build="ament_python"),
+    "fleet/fleet/__init__.py": """
+        from .names import *
+    """,
+    "fleet/fleet/names.py": """
+        __all__ = ['CMD_TOPIC', '_ODOM_TOPIC']
+        CMD_TOPIC = 'cmd_vel'
+        _ODOM_TOPIC = 'odom'
+        STATUS_TOPIC = 'status_internal'
+    """,
+    "fleet/fleet/topics.py": """
+        STATUS_TOPIC = 'status'
+        from fleet import *
+    """,
+    "fleet/fleet/base.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from fleet import CMD_TOPIC, _ODOM_TOPIC
+        from fleet.topics import STATUS_TOPIC
+
+
+        class Base(Node):
+            def __init__(self):
+                super().__init__('base')
+                self.create_publisher(String, CMD_TOPIC, 10)
+                self.create_publisher(String, _ODOM_TOPIC, 10)
+                self.create_publisher(String, STATUS_TOPIC, 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Base())
+    """,
+}
+
+
+def test_star_import_honours_all(tmp_path: Path) -> None:
+    """``__all__`` exports a private name and hides a public one: ``STATUS_TOPIC`` of
+    topics.py is not overwritten by the star import, so no second status topic appears."""
+    assert publishers(write(tmp_path, STAR_PACKAGE)) == {
+        "/base": ["/cmd_vel", "/odom", "/status"]}
+
+
+def test_star_import_without_all_takes_public_names(tmp_path: Path) -> None:
+    files = dict(STAR_PACKAGE)
+    files["fleet/fleet/names.py"] = """
+        CMD_TOPIC = 'cmd_vel'
+        _ODOM_TOPIC = 'odom'
+    """
+    files["fleet/fleet/__init__.py"] = "from .names import *\nfrom .names import _ODOM_TOPIC\n"
+    assert publishers(write(tmp_path, files)) == {"/base": ["/cmd_vel", "/odom", "/status"]}
