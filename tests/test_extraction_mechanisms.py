@@ -72,3 +72,48 @@ def test_star_import_without_all_takes_public_names(tmp_path: Path) -> None:
     """
     files["fleet/fleet/__init__.py"] = "from .names import *\nfrom .names import _ODOM_TOPIC\n"
     assert publishers(write(tmp_path, files)) == {"/base": ["/cmd_vel", "/odom", "/status"]}
+
+
+CLI_PACKAGE = {
+    "relay/package.xml": PACKAGE_XML.format(name="relay", build="ament_python"),
+    "relay/relay/__init__.py": "",
+    "relay/relay/args.py": """
+        def ros_args(robot):
+            return ['--ros-args', '-r', '__ns:=/' + robot, '-r', 'chatter:=talk',
+                    '-p', 'rate:=5', '-r', 'other_node:odom:=wrong']
+    """,
+    "relay/relay/relay.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from relay.args import ros_args
+
+
+        class Relay(Node):
+            def __init__(self, robot):
+                super().__init__('relay', cli_args=ros_args(robot))
+                self.create_publisher(String, 'chatter', 10)
+                self.create_publisher(String, 'odom', 10)
+                self.create_publisher(String, '/abs/chatter', 10)
+
+
+        def main():
+            rclpy.init()
+            renamed = rclpy.create_node('draft', cli_args=['--ros-args', '-r', '__node:=final'])
+            renamed.create_publisher(String, '~/state', 1)
+            plain = rclpy.create_node('plain', cli_args=['--', '-r', '__ns:=/ignored'])
+            plain.create_publisher(String, 'chatter', 1)
+            rclpy.spin(Relay('scout'))
+    """,
+}
+
+
+def test_cli_args_namespace_name_and_remaps(tmp_path: Path) -> None:
+    """``__ns``/``__node`` and topic rules of ``cli_args`` apply to their node only; a rule
+    for another node and arguments outside ``--ros-args`` change nothing."""
+    assert publishers(write(tmp_path, CLI_PACKAGE)) == {
+        "/final": ["/final/state"],
+        "/plain": ["/chatter"],
+        "/scout/relay": ["/abs/chatter", "/scout/odom", "/scout/talk"],
+    }
