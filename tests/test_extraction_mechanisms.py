@@ -117,3 +117,89 @@ def test_cli_args_namespace_name_and_remaps(tmp_path: Path) -> None:
         "/plain": ["/chatter"],
         "/scout/relay": ["/abs/chatter", "/scout/odom", "/scout/talk"],
     }
+
+
+HANDLERS_PACKAGE = {
+    "mux/package.xml": PACKAGE_XML.format(name="mux", build="ament_python"),
+    "mux/mux/__init__.py": "",
+    "mux/mux/table.py": """
+        from std_msgs.msg import String
+        from std_srvs.srv import Trigger
+
+        SERVICES = {}
+        SERVICES['reset'] = Trigger
+        SERVICES.update({'stop': Trigger})
+        OUTPUTS = []
+        OUTPUTS.append(('left/cmd', String))
+        OUTPUTS.extend([('right/cmd', String)])
+    """,
+    "mux/mux/mux.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from mux.table import OUTPUTS, SERVICES
+
+
+        class Mux(Node):
+            def __init__(self):
+                super().__init__('mux')
+                for topic, msg_type in OUTPUTS:
+                    self.create_publisher(msg_type, topic, 10)
+                for name, srv_type in SERVICES.items():
+                    self.create_service(srv_type, name, self.on_call)
+                inputs = []
+                inputs.append('joy_in')
+                if not inputs:
+                    raise RuntimeError('no inputs configured')
+                self.subs = [self.create_subscription(String, t, self.on_msg, 10) for t in inputs]
+                match self.get_name():
+                    case str() as me:
+                        self.create_publisher(String, me + '_state', 1)
+                if (extra := 'diagnostics'):
+                    self.create_publisher(String, extra, 1)
+
+            def on_call(self, request, response):
+                return response
+
+            def on_msg(self, msg):
+                pass
+
+
+        class Recorder(Node):
+            def __init__(self):
+                super().__init__('recorder')
+                wanted = []
+                wanted.append('rosout_copy')
+                for topic in self.get_parameter('topics').value:
+                    self.create_subscription(String, topic, self.on_msg, 10)
+                for topic in wanted:
+                    self.create_subscription(String, topic, self.on_msg, 10)
+
+            def on_msg(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Mux())
+            rclpy.spin(Recorder())
+    """,
+}
+
+
+def test_loops_containers_and_patterns_inside_functions(tmp_path: Path) -> None:
+    """Handler tables filled in one module and iterated in another, a list appended before
+    ``if not lst: raise`` (the rest of the constructor stays reachable), comprehension, match
+    and walrus bindings. Precision: each node gets only its own list's topics, and a loop over
+    a run-time parameter stays one unknown subscription."""
+    graph = build_graph(write(tmp_path, HANDLERS_PACKAGE))
+    got = {node.fqn: sorted((e.kind, e.name or "?") for e in node.entities
+                            if e.kind != "parameters") for node in graph.nodes}
+    assert got == {
+        "/mux": [("publishers", "/diagnostics"), ("publishers", "/left/cmd"),
+                 ("publishers", "/mux_state"), ("publishers", "/right/cmd"),
+                 ("services", "/reset"), ("services", "/stop"),
+                 ("subscriptions", "/joy_in")],
+        "/recorder": [("subscriptions", "/rosout_copy"), ("subscriptions", "?")],
+    }

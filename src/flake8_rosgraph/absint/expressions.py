@@ -10,6 +10,7 @@ import itertools
 
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
+from .containers import MUTATORS, mutated
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
                      join_all)
@@ -267,7 +268,15 @@ class ExpressionSemantics:
                     kwargs.update((k.strings()[0], v) for k, v in mapping.items)
                 else:
                     star = True
-        return self.call(func, Args(args, kwargs, star), node)
+        result = self.call(func, Args(args, kwargs, star), node)
+        target = node.func
+        if isinstance(target, ast.Attribute) and target.attr in MUTATORS and not star \
+                and isinstance(target.value, (ast.Name, ast.Attribute)):
+            holder = self.eval(target.value)
+            if any(isinstance(a, (Seq, Coll, DictAtom)) for a in holder):
+                # Filled in place: rebind what the container was reached through.
+                self.assign(target.value, mutated(holder, target.attr, args, self.iter_elem))
+        return result
 
     # -- helpers ------------------------------------------------------------------------------
     def iter_elem(self, value: Value) -> Value:

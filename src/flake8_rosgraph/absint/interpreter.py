@@ -17,9 +17,10 @@ from .cfg import CFG, Bind, Eval, Return
 from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
 from .frame import Env, Frame
 from .program import Module
-from .values import (BOTTOM, TOP, ClassAtom, Extern, FuncAtom, ModuleAtom, Record, Seq, Value,
-                     atoms, const)
+from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Record,
+                     Seq, Value, atoms, const)
 from .calls import CallSemantics
+from .containers import with_item
 from .expressions import ExpressionSemantics
 from .objects import ObjectSemantics
 
@@ -163,8 +164,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
             for node in ast.walk(op.target):
                 name = getattr(node, "name", None) or getattr(node, "rest", None)
                 if isinstance(name, str):
-                    whole = isinstance(node, ast.MatchAs) and node.pattern is None \
-                        and node is op.target
+                    # ``case P as x`` binds the whole subject, whatever ``P`` checks.
+                    whole = isinstance(node, ast.MatchAs) and node is op.target
                     self.store_name(name, subject if whole else TOP)
 
     def s_Assign(self, op: ast.Assign) -> None:
@@ -262,8 +263,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
                 # through the variable or attribute (``self.qos.depth = 5``) that holds them.
                 self.assign(target.value, _with_field(holder, target.attr, value))
         elif isinstance(target, ast.Subscript):
-            self.eval(target.value)
-            self.eval(target.slice)
+            holder = self.eval(target.value)
+            key = self.eval(target.slice)
+            if isinstance(target.value, (ast.Name, ast.Attribute)) \
+                    and any(isinstance(a, (Seq, Coll, DictAtom)) for a in holder):
+                self.assign(target.value, with_item(holder, key, value))
         elif isinstance(target, (ast.Tuple, ast.List)):
             self._assign_seq(target.elts, value)
         elif isinstance(target, ast.Starred):
@@ -311,6 +315,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics):
 
     def load_name(self, name: str) -> Value:
         frame = self.frame
+        if name.startswith("$"):  # the CFG's temporaries (a loop's iterable, a match subject)
+            return frame.env.get(name, TOP)
         for overlay in reversed(frame.comp):
             if name in overlay:
                 return overlay[name]
