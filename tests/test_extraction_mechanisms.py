@@ -203,3 +203,60 @@ def test_loops_containers_and_patterns_inside_functions(tmp_path: Path) -> None:
                  ("subscriptions", "/joy_in")],
         "/recorder": [("subscriptions", "/rosout_copy"), ("subscriptions", "?")],
     }
+
+
+DYNAMIC_PACKAGE = {
+    "cams/package.xml": PACKAGE_XML.format(name="cams", build="ament_python"),
+    "cams/cams/__init__.py": "",
+    "cams/cams/base.py": """
+        from rclpy.node import Node
+        from sensor_msgs.msg import Image
+
+
+        class Camera(Node):
+            TOPIC = 'image_raw'
+
+            def __init__(self, name):
+                super(Camera, self).__init__(name)
+                self.create_publisher(Image, self.__class__.TOPIC, 10)
+                type(self).add_info(self)
+                suffix = getattr(self, 'info_suffix', 'camera_info')
+                self.create_publisher(Image, suffix, 10)
+                self.create_publisher(Image, getattr(self, 'mode_topic', 'mode'), 1)
+
+            def add_info(self):
+                self.create_publisher(Image, 'info_base', 1)
+    """,
+    "cams/cams/stereo.py": """
+        import rclpy
+        from sensor_msgs.msg import Image
+
+        from cams.base import Camera
+
+
+        class Stereo(Camera):
+            TOPIC = 'stereo/image'
+
+            def __init__(self):
+                self.mode_topic = 'stereo/mode'
+                super(Stereo, self).__init__('stereo')
+
+            def add_info(self):
+                self.create_publisher(Image, 'stereo/info', 1)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Stereo())
+    """,
+}
+
+
+def test_dynamic_class_access_and_getattr_defaults(tmp_path: Path) -> None:
+    """``self.__class__``/``type(self)`` are the instance's own class (the subclass's
+    attribute and override, not the base's), two-argument ``super`` reaches the base, and
+    ``getattr`` with a default gives only the default when nothing can set the attribute;
+    when some code assigns it, the heap cannot order the assignment and the read, so both
+    stay possible (never the base's ``TOPIC`` or ``add_info``, never unknown)."""
+    assert publishers(write(tmp_path, DYNAMIC_PACKAGE)) == {
+        "/stereo": ["/camera_info", "/mode", "/stereo/image", "/stereo/info", "/stereo/mode"]}

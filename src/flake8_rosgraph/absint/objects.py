@@ -28,6 +28,8 @@ class ObjectSemantics:
     def _attr_of(self, atom: Atom, attr: str) -> Value:
         task = self.frame.task
         if isinstance(atom, Obj):
+            if attr == "__class__":
+                return atoms([atom.cls])
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
