@@ -40,7 +40,15 @@ def _graph(args: argparse.Namespace) -> int:
                   file=sys.stderr)
             return 2
         shown = apply(graph, system)
-        shown.diagnostics = graph.diagnostics
+        shown.diagnostics = sorted(set(graph.diagnostics) | set(system.problems))
+        for problem in sorted(set(system.problems)):  # what the system may lack, said
+            print(f"{problem.path}:{problem.line}: {problem.severity}: {problem.message}",
+                  file=sys.stderr)
+        unresolved = sum(1 for n in system.nodes if n.unresolved)
+        if not system.complete:
+            print(f"flake8-rosgraph: {args.launch} is not fully followed: "
+                  f"{len(set(system.problems))} construct(s) not followed, "
+                  f"{unresolved} node(s) with unknown values", file=sys.stderr)
     if args.format == "dot":
         text = to_dot(shown)
     else:

@@ -199,3 +199,39 @@ def test_cli_prints_gaps_and_count(tmp_path: Path) -> None:
     quiet = subprocess.run([sys.executable, "-m", "flake8_rosgraph", "graph", str(root)],
                            capture_output=True, text=True, check=True)
     assert "creation sites" not in quiet.stderr and "not in the graph" not in quiet.stderr
+
+
+def test_launch_file_not_followed_is_said(tmp_path: Path) -> None:
+    """``graph --launch`` names what it could not follow instead of printing a partial
+    system silently; a fully followed file adds nothing."""
+    root = write(tmp_path, dict(FLEET, **{
+        "fleet/launch/dynamic.launch.py": """
+            from launch import LaunchDescription
+            from launch.actions import OpaqueFunction
+            from launch_ros.actions import Node
+
+
+            def spawn(context):
+                return [Node(package='fleet', executable='driver')]
+
+
+            def generate_launch_description():
+                return LaunchDescription([OpaqueFunction(function=spawn)])
+        """,
+        "fleet/launch/plain.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+
+            def generate_launch_description():
+                return LaunchDescription([Node(package='fleet', executable='driver')])
+        """,
+    }))
+    base = [sys.executable, "-m", "flake8_rosgraph", "graph", str(root), "--launch"]
+    run = subprocess.run(base + [str(root / "fleet/launch/dynamic.launch.py")],
+                         capture_output=True, text=True, check=True)
+    assert "fleet/launch/dynamic.launch.py:11: warning: OpaqueFunction is not followed" in run.stderr
+    assert "dynamic.launch.py is not fully followed: 1 construct(s) not followed" in run.stderr
+    plain = subprocess.run(base + [str(root / "fleet/launch/plain.launch.py")],
+                           capture_output=True, text=True, check=True)
+    assert "not fully followed" not in plain.stderr and "not followed" not in plain.stderr
