@@ -472,14 +472,10 @@ def _argument(call: ast.Call, signature, param: str) -> ast.expr | None:
         if kw.arg == param:
             return kw.value
     names = [p.name for p in signature.params if p.kind == "pos"]
-    if names and names[0] == "self" and isinstance(call.func, ast.Attribute) \
-            and call.func.attr != "__init__":
+    explicit_self = isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" \
+        and not isinstance(call.func.value, ast.Call)  # ``Base.__init__(self, …)``
+    if names and names[0] == "self" and not explicit_self:
         names = names[1:]
-    elif names and names[0] == "self":
-        names = names[1:]
-        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" \
-                and not (isinstance(call.func.value, ast.Call)):
-            names = ["self"] + names  # ``Base.__init__(self, …)``
     if param in names:
         index = names.index(param)
         if index < len(call.args) and not any(isinstance(a, ast.Starred) for a in call.args[:index + 1]):

@@ -12,11 +12,11 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
-import textwrap
 from pathlib import Path
 
 from flake8_rosgraph.analysis import analyse
 from flake8_rosgraph.explain import explain
+from test_workspace_discovery import write
 
 EXPECT = re.compile(r"#\s*(ok|unknown|missing)\b:?\s*(.*)$")
 
@@ -25,14 +25,6 @@ PACKAGE_XML = """<?xml version="1.0"?>
 <description>d</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
 <exec_depend>rclpy</exec_depend><export><build_type>ament_python</build_type></export></package>
 """
-
-
-def write(root: Path, files: dict[str, str]) -> Path:
-    for rel, text in files.items():
-        path = root / rel
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(textwrap.dedent(text).lstrip("\n"), encoding="utf-8")
-    return root
 
 
 def expectations(root: Path) -> dict[tuple[str, int], tuple[str, str]]:
