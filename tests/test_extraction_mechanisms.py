@@ -260,3 +260,50 @@ def test_dynamic_class_access_and_getattr_defaults(tmp_path: Path) -> None:
     stay possible (never the base's ``TOPIC`` or ``add_info``, never unknown)."""
     assert publishers(write(tmp_path, DYNAMIC_PACKAGE)) == {
         "/stereo": ["/camera_info", "/mode", "/stereo/image", "/stereo/info", "/stereo/mode"]}
+
+
+def test_container_filled_by_a_helper_keeps_its_loop_alive(tmp_path: Path) -> None:
+    """A dict filled through a helper it is passed to (an alias the analysis does not
+    rebind) is not trusted to stay empty: the commands built in the loop over it stay in the
+    graph, unknown-named, and the node's fixed subscription after ``if not commands: raise`` is
+    kept."""
+    root = write(tmp_path, {
+        "pad/package.xml": PACKAGE_XML.format(name="pad", build="ament_python"),
+        "pad/pad/__init__.py": "",
+        "pad/pad/pad.py": """
+            import rclpy
+            from rclpy.node import Node
+            from sensor_msgs.msg import Joy
+            from std_msgs.msg import String
+
+
+            def fill(table, key, value):
+                head, _, rest = key.partition('.')
+                table.setdefault(head, {})[rest] = value
+
+
+            class Pad(Node):
+                def __init__(self):
+                    super().__init__('pad', allow_undeclared_parameters=True)
+                    commands = {}
+                    for name in sorted(self._parameters):
+                        fill(commands, name, self.get_parameter(name).value)
+                    if not commands:
+                        raise RuntimeError('no commands configured')
+                    for name, config in commands.items():
+                        self.create_publisher(String, config['topic'], 1)
+                    self.create_subscription(Joy, 'joy', self.on_joy, 1)
+
+                def on_joy(self, msg):
+                    pass
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Pad())
+        """,
+    })
+    graph = build_graph(root)
+    (node,) = graph.nodes
+    assert sorted((e.kind, e.name or "?") for e in node.entities if e.kind != "parameters") == [
+        ("publishers", "?"), ("subscriptions", "/joy")]

@@ -5,7 +5,9 @@ attribute the container was reached through (the interpreter does that, as for r
 A known-length list that is mutated becomes a collection of unknown length holding the
 old and new elements: its emptiness is then undecided, so code guarded by ``if not lst``
 stays reachable both ways.  Only the holder named at the call is updated; another alias of
-the same list keeps its old value (a documented limit).
+the same list (a helper it is passed to) keeps its old value, so an *empty* list or dict
+is never trusted to stay empty; a non-empty one filled further through an alias loses
+those additions (a documented limit).
 """
 from __future__ import annotations
 
@@ -18,6 +20,15 @@ MUTATORS = frozenset({"append", "extend", "insert", "add", "update", "setdefault
                       "remove", "pop", "discard", "sort", "reverse"})
 #: Pairs a dict keeps before it is given up as unknown (a dict filled in a loop).
 MAX_DICT_ITEMS = 64
+
+
+def may_be_filled_elsewhere(atom) -> bool:
+    """An empty list or dict: code the analysis does not see rebinding (a helper it is passed
+    to, another alias) may fill it, so iterating a value that is only ever empty yields
+    unknown elements and its emptiness decides no branch — a loop over it must not be dead
+    code. (Joined with filled versions of itself, the empty one is just its first state.)"""
+    return (isinstance(atom, Seq) and atom.kind == "list" and not atom.items) or \
+        (isinstance(atom, DictAtom) and not atom.items)
 
 
 def mutated(value: Value, method: str, args: list[Value],

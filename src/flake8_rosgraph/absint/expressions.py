@@ -10,7 +10,7 @@ import itertools
 
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
-from .containers import MUTATORS, mutated
+from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
                      join_all)
@@ -282,6 +282,8 @@ class ExpressionSemantics:
     def iter_elem(self, value: Value) -> Value:
         if value.is_top:
             return TOP
+        if all(may_be_filled_elsewhere(a) for a in value):
+            return TOP  # only ever seen empty here: what fills it is not seen
         out = BOTTOM
         for atom in value:
             if isinstance(atom, Seq):
@@ -310,7 +312,7 @@ class ExpressionSemantics:
         for atom in value:
             if isinstance(atom, Const):
                 seen.add(bool(atom.value))
-            elif isinstance(atom, Seq):
+            elif isinstance(atom, Seq) and not may_be_filled_elsewhere(atom):
                 seen.add(bool(atom.items))
             elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)):
                 seen.add(True)
