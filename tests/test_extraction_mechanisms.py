@@ -307,3 +307,57 @@ def test_container_filled_by_a_helper_keeps_its_loop_alive(tmp_path: Path) -> No
     (node,) = graph.nodes
     assert sorted((e.kind, e.name or "?") for e in node.entities if e.kind != "parameters") == [
         ("publishers", "?"), ("subscriptions", "/joy")]
+
+
+def test_library_models_wait_for_message_and_keyword_only_creation(tmp_path: Path) -> None:
+    """``wait_for_message`` subscribes its node; every ``create_*`` spelled with keywords
+    only is the same entity as the positional spelling."""
+    root = write(tmp_path, {
+        "probe/package.xml": PACKAGE_XML.format(name="probe", build="ament_python"),
+        "probe/probe/__init__.py": "",
+        "probe/probe/probe.py": """
+            import rclpy
+            from rclpy.wait_for_message import wait_for_message
+            from rclpy.node import Node
+            from std_msgs.msg import String
+            from std_srvs.srv import Trigger
+
+
+            class Probe(Node):
+                def __init__(self):
+                    super().__init__(node_name='probe', namespace='/lab')
+                    self.create_publisher(msg_type=String, topic='out', qos_profile=10)
+                    self.create_subscription(msg_type=String, topic='in', callback=self.on_msg,
+                                             qos_profile=10)
+                    self.create_service(srv_type=Trigger, srv_name='poke', callback=self.on_poke)
+                    self.create_client(srv_type=Trigger, srv_name='peer/poke')
+                    self.create_timer(timer_period_sec=0.5, callback=self.on_tick)
+
+                def on_msg(self, msg):
+                    pass
+
+                def on_poke(self, request, response):
+                    return response
+
+                def on_tick(self):
+                    pass
+
+
+            def main():
+                rclpy.init()
+                node = Probe()
+                ok, first = wait_for_message(String, node, '/lab/status', time_to_wait=2.0)
+                rclpy.spin(node)
+        """,
+    })
+    (node,) = build_graph(root).nodes
+    got = sorted((e.kind, e.name, e.type, e.period) for e in node.entities
+                 if e.kind != "parameters")
+    assert got == [
+        ("clients", "/lab/peer/poke", "std_srvs/srv/Trigger", None),
+        ("publishers", "/lab/out", "std_msgs/msg/String", None),
+        ("services", "/lab/poke", "std_srvs/srv/Trigger", None),
+        ("subscriptions", "/lab/in", "std_msgs/msg/String", None),
+        ("subscriptions", "/lab/status", "std_msgs/msg/String", None),
+        ("timers", None, None, 0.5),
+    ]
