@@ -208,12 +208,17 @@ class _Explainer:
         if unknowns is None:
             return Explanation(site, "missing", (
                 "the object it is created on is not known to be a node here",
-                *self._origin_reasons(call, scope, _node_argument(call)),))
+                *self._origin_reasons(call, scope, _node_argument(call), module),))
         if not unknowns:
             return Explanation(site, "complete", ())
         reasons = list(unknowns)
-        if "unknown name" in unknowns:
-            reasons.extend(self._origin_reasons(call, scope, self._name_argument(call, model, effects)))
+        for unknown in unknowns:
+            field = unknown.removeprefix("unknown ")
+            found = self._owner_reasons(key) if field == "name" else []
+            if not found:  # the written value itself is unknown
+                argument = self._field_argument(call, model, effects, field)
+                found = self._origin_reasons(call, scope, argument, module)
+            reasons.extend(found)
         func = self._function_of(scope)
         if func is not None and self._overflowed(func):
             reasons.append(f"{func.qualname} is called in more than 8 different ways and was "
@@ -263,7 +268,7 @@ class _Explainer:
                     "branch, exception or call the analysis decided cannot get here)"]
         receiver = call.func.value if isinstance(call.func, ast.Attribute) else call.func
         reasons = [f"`{_short(receiver)}` is not known to be a modelled library object here"]
-        return reasons + self._origin_reasons(call, scope, receiver)
+        return reasons + self._origin_reasons(call, scope, receiver, module)
 
     def _never_called(self, func: Function) -> str:
         if isinstance(func.node, ast.Lambda):
@@ -321,42 +326,59 @@ class _Explainer:
         fid = self.program.fid_of.get(id(scope))
         return None if fid is None else self.program.functions[fid]
 
+    def _owner_reasons(self, key: tuple) -> list[str]:
+        """Why a name written in full came out unknown: the node it is relative to."""
+        relative, private = set(), set()
+        for node, ent in self.graph_entities.get(key, []):
+            if ent.name is None and ent.raw_name is not None:
+                if node.namespace is None:
+                    relative.add(ent.raw_name)
+                elif node.name is None:
+                    private.add(ent.raw_name)
+        out = []
+        if relative:
+            out.append(f"{_some(relative)} relative to the namespace of its node, which is unknown")
+        if private:
+            out.append(f"{_some(private)} built from the name of its node, which is unknown")
+        return out
+
     @staticmethod
-    def _name_argument(call: ast.Call, model: FunctionModel | None,
-                       effects: list[Effect]) -> ast.expr | None:
-        """The argument holding the created thing's name (the parameter the stub names)."""
+    def _field_argument(call: ast.Call, model: FunctionModel | None, effects: list[Effect],
+                        field: str) -> ast.expr | None:
+        """The argument that gives the created thing's ``field`` ("name", "namespace" or
+        "type"), as the stub declares it."""
         if model is None:
             return None
         for eff in effects:
-            param = ENTITY_KINDS.get(eff.kind, (None, "name"))[1]
+            arg = ENTITY_KINDS.get(eff.kind, (None, "name"))[1] if field == "name" else field
             for spec in model.effects:
-                ref = dict(spec.args).get(param)
+                ref = dict(spec.args).get(arg)
                 if spec.kind == eff.kind and ref is not None and ref.how in ("arg", "overridable"):
                     return _argument(call, model.signature, ref.data)
         return None
 
-    def _origin_reasons(self, call: ast.Call, scope: ast.AST | None,
-                        expr: ast.expr | None) -> list[str]:
+    def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
+                        module: Module) -> list[str]:
         """Where the value of ``expr`` comes from, in words (what made it unknown)."""
         if expr is None:
             return []
         out: list[str] = []
-        for name in sorted({n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}):
-            binding = _binding_of(name, scope, call)
+        for name in sorted({n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}
+                           - {"self", "cls"}):
+            binding = _binding_of(name, scope, call) or _module_binding(name, module)
             if binding:
                 out.append(binding)
-        for sub in ast.walk(expr):
-            if isinstance(sub, ast.Call):
-                callee = _dotted(sub.func) or ""
-                if callee.endswith(("get_parameter", "get_parameter_or")) or \
-                        callee.endswith(".value") or "declare_parameter" in callee:
-                    out.append("it comes from a ROS parameter (known only at run time)")
-                    break
-            if isinstance(sub, ast.Attribute) and sub.attr == "value" and \
-                    isinstance(sub.value, ast.Call) and \
-                    (_dotted(sub.value.func) or "").endswith(("get_parameter", "declare_parameter")):
+        calls = [sub for sub in ast.walk(expr) if isinstance(sub, ast.Call)]
+        inner = {id(n) for c in calls for n in ast.walk(c) if n is not c}
+        for sub in calls:
+            if id(sub) in inner:
+                continue  # named by the call around it
+            callee = _dotted(sub.func) or ""
+            if callee.endswith(("get_parameter", "get_parameter_or", "declare_parameter")):
                 out.append("it comes from a ROS parameter (known only at run time)")
-                break
+            else:
+                out.append(f"it is built from `{_short(sub)}`, whose result is not known "
+                           "statically")
         if not out and isinstance(expr, ast.Attribute):
             out.append(f"`{_short(expr)}` holds a value the analysis does not know here")
         return list(dict.fromkeys(out))
@@ -378,6 +400,15 @@ def _calls_with_scope(tree: ast.Module):
                 stack.append((child, scope, child))
             else:
                 stack.append((child, scope, klass))
+
+
+def _some(names: set[str]) -> str:
+    """A few names of a set, in order, with the verb: "`a` is", "`a`, `b` (+3 more) are"."""
+    first = sorted(names)[:2]
+    text = ", ".join(f"`{n}`" for n in first)
+    more = len(names) - len(first)
+    text += f" (+{more} more)" if more else ""
+    return text + (" is" if len(names) == 1 else " are")
 
 
 def _dotted(expr: ast.AST) -> str | None:
@@ -480,6 +511,20 @@ def _argument(call: ast.Call, signature, param: str) -> ast.expr | None:
         index = names.index(param)
         if index < len(call.args) and not any(isinstance(a, ast.Starred) for a in call.args[:index + 1]):
             return call.args[index]
+    return None
+
+
+def _module_binding(name: str, module: Module) -> str | None:
+    """A module-level name bound more than once (imports chosen by a condition)."""
+    count = 0
+    for node in ast.walk(module.tree):
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            count += sum((a.asname or a.name.split(".")[0]) == name for a in node.names)
+        elif isinstance(node, ast.Assign) and any(
+                isinstance(t, ast.Name) and t.id == name for t in node.targets):
+            count += 1
+    if count > 1:
+        return f"`{name}` is bound {count} times at module level (one per condition)"
     return None
 
 

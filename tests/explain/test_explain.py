@@ -227,3 +227,44 @@ def test_launch_file_not_followed_is_said(tmp_path: Path) -> None:
     plain = subprocess.run(base + [str(root / "fleet/launch/plain.launch.py")],
                            capture_output=True, text=True, check=True)
     assert "not fully followed" not in plain.stderr and "not followed" not in plain.stderr
+
+
+def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> None:
+    """A node namespace from an argument, the relative names it takes away, a type chosen
+    by a module-level condition, and a name built from a run-time call."""
+    check(write(tmp_path, {
+        "tester/package.xml": PACKAGE_XML.format(name="tester"),
+        "tester/tester/__init__.py": "",
+        "tester/tester/tester.py": """
+            import os
+            import sys
+
+            import rclpy
+            from rclpy.node import Node
+
+            if os.environ.get('ROS_DISTRO') == 'humble':
+                from geometry_msgs.msg import Twist as CmdVel
+            else:
+                from geometry_msgs.msg import TwistStamped as CmdVel
+            from std_msgs.msg import String
+
+
+            class Tester(Node):
+                def __init__(self, namespace):
+                    super().__init__('tester', namespace=namespace)  # unknown: parameter `namespace` of __init__
+                    self.create_publisher(String, 'initialpose', 1)  # unknown: `initialpose` is relative to the namespace of its node
+                    self.create_publisher(String, '/abs/goal', 1)  # ok
+
+
+            class Driver(Node):
+                def __init__(self):
+                    super().__init__('driver_{}'.format(os.getpid()))  # unknown: built from `'driver_{}'.format(os.getpid())`
+                    self.create_publisher(CmdVel, '/cmd_vel', 1)  # unknown: `CmdVel` is bound 2 times at module level
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Tester(sys.argv[1]))
+                rclpy.spin(Driver())
+        """,
+    }))
