@@ -264,7 +264,6 @@ class Program:
         self._star_memo[mod.name] = frozenset(out)
         return self._star_memo[mod.name]
 
-
     def resolve_import(self, mod: Module, name: str | None, level: int) -> str:
         """The absolute dotted name of ``from <level dots><name> import …`` inside ``mod``."""
         if level == 0:
