@@ -32,7 +32,8 @@ SHIPPED_NAMES = [name for name, _ in SHIPPED]
 
 #: The arguments the graph builder reads, per effect kind (docs/stubs.md, "Effects").
 EFFECT_ARGS: dict[str, frozenset[str]] = {
-    "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare"}),
+    "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare",
+                        "cli_args"}),
     "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
     "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),

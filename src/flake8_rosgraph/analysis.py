@@ -113,11 +113,20 @@ def build_graph(root: Path, stub_files: Sequence[Path] = (),
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
     ``buffers``: unsaved editor content that replaces files on disk."""
     with collector_paused():
-        return _build_graph(Path(root), stub_files, interface_dirs, buffers)
+        return _build_graph(Path(root), stub_files, interface_dirs, buffers)[0]
+
+
+def analyse(root: Path, stub_files: Sequence[Path] = (),
+            interface_dirs: Sequence[Path] = ()) -> tuple[RosGraph, Analysis | None]:
+    """The graph and the analysis it was built from (``None`` after an internal error), for
+    callers that explain the graph (``graph --explain``); never raises."""
+    with collector_paused():
+        return _build_graph(Path(root), stub_files, interface_dirs, ())
 
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
-                 buffers: Buffers) -> RosGraph:
+                 buffers: Buffers) -> tuple[RosGraph, Analysis | None]:
+    analysis: Analysis | None = None
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -142,7 +151,8 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
                                               f"(at {Path(where.filename).name}:{where.lineno})",
                                       "error"))
         graph = RosGraph()
+        analysis = None
     # Paths and messages quote the analysed workspace: escaped, so that they print safely.
     graph.diagnostics = sorted({Diagnostic(escape_text(d.path), d.line, escape_text(d.message), d.severity)
                                 for d in diagnostics})
-    return graph
+    return graph, analysis

@@ -19,19 +19,21 @@ from .options import TRUE_WORDS
 
 
 def _graph(args: argparse.Namespace) -> int:
-    from .analysis import build_graph
+    from .analysis import analyse
     from .launch.api import graph_to_json_obj, system_to_json
 
     root = Path(args.path)
     if not root.exists():
         print(f"flake8-rosgraph: error: no such file or directory: {args.path}", file=sys.stderr)
         return 2
-    graph = build_graph(root, [Path(s) for s in args.stubs])
+    graph, analysis = analyse(root, [Path(s) for s in args.stubs])
     for diag in graph.diagnostics:
         if diag.severity == "info" and not args.verbose:
             continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(escape_text(f"{where}{diag.severity}: {diag.message}"), file=sys.stderr)
+    if args.explain:
+        _explain_gaps(graph, analysis, args.verbose)
     system = None
     if args.launch:
         system = _find_system(graph, root, Path(args.launch))
@@ -39,14 +41,19 @@ def _graph(args: argparse.Namespace) -> int:
             print(f"flake8-rosgraph: error: {args.launch} is not a launch file of {args.path}",
                   file=sys.stderr)
             return 2
+        for problem in sorted(set(system.problems)):  # what the system may lack, said
+            print(escape_text(f"{problem.path}:{problem.line}: {problem.severity}: {problem.message}"),
+                  file=sys.stderr)
         if not system.complete:
-            print(escape_text(f"{system.launch_file}: warning: the launch file could not be followed completely; "
-                              "what it starts may be missing (see \"problems\" in the JSON)"), file=sys.stderr)
+            unresolved = sum(1 for n in system.nodes if n.unresolved)
+            print(escape_text(f"flake8-rosgraph: {args.launch} is not fully followed: "
+                              f"{len(set(system.problems))} construct(s) not followed, "
+                              f"{unresolved} node(s) with unknown values"), file=sys.stderr)
     if args.format == "json":
         if system is not None:
             from .render import launched_only
             shown = launched_only(graph, system)
-            shown.diagnostics = graph.diagnostics
+            shown.diagnostics = sorted(set(graph.diagnostics) | set(system.problems))
             obj = graph_to_json_obj(shown)
         else:
             obj = graph_to_json_obj(graph)
@@ -68,6 +75,20 @@ def _graph(args: argparse.Namespace) -> int:
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _explain_gaps(graph, analysis, verbose: bool) -> None:
+    """Creation sites missing from the graph or known only partly, one line each (stderr)."""
+    from .explain import explain
+    if analysis is None:
+        print("flake8-rosgraph: --explain: the analysis did not complete; nothing to explain",
+              file=sys.stderr)
+        return
+    report = explain(analysis, graph)
+    for item in report.gaps():
+        print(item.line(), file=sys.stderr)
+    if verbose:
+        print(report.summary(), file=sys.stderr)
 
 
 def _find_system(graph, root: Path, launch_file: Path):
@@ -96,7 +117,7 @@ def _rules(args: argparse.Namespace) -> int:
     return 0
 
 
-def _explain(args: argparse.Namespace) -> int:
+def _explain_rule(args: argparse.Namespace) -> int:
     from .rules import RULES
     from .rules.docs import rule_doc
 
@@ -128,6 +149,10 @@ def make_parser() -> argparse.ArgumentParser:
                        help="extra library model (TOML); repeatable")
     graph.add_argument("--verbose", "-v", action="store_true",
                        help="also print informational diagnostics (analysis precision bounds)")
+    graph.add_argument("--explain", action="store_true",
+                       help="list on stderr every creation call (node, publisher, subscription, "
+                            "service, client, timer, action) missing from the graph or known only "
+                            "partly, with the reasons; with --verbose, a one-line count")
     graph.add_argument("--launch", metavar="FILE",
                        help="show only the system this launch file starts (names, namespaces and "
                             "remappings applied) instead of the code-level graph")
@@ -138,7 +163,7 @@ def make_parser() -> argparse.ArgumentParser:
     rules.set_defaults(run=_rules)
     explain = sub.add_parser("explain", help="print a rule's documentation (what, why, example, fix)")
     explain.add_argument("code", help="rule code (ROS003) or name (subscription-without-publisher)")
-    explain.set_defaults(run=_explain)
+    explain.set_defaults(run=_explain_rule)
     return parser
 
 

@@ -36,27 +36,122 @@ class Workspace:
     diagnostics: list[Diagnostic]
 
 
+#: Files whose presence makes a folder a distribution root (a ROS package or a Python
+#: project): the folder holds Python packages, it is never one itself.
+DIST_MARKERS = ("package.xml", "setup.py", "setup.cfg", "pyproject.toml")
+#: Bytes read from an extension-less file to look for a Python shebang.
+SHEBANG_BYTES = 256
+_SHEBANG = re.compile(rb"^#![^\n]*\bpython[0-9.]*\b")
+#: Scripts named by a build file: ``scripts=[…]`` in setup.py, ``scripts =`` in setup.cfg,
+#: ``install(PROGRAMS …)`` in CMakeLists.txt (the arguments up to the closing parenthesis).
+_SETUP_SCRIPTS = re.compile(r"\bscripts\s*=\s*\[([^\]]*)\]")
+_CFG_SCRIPTS = re.compile(r"^scripts\s*=\s*((?:.*\n(?:[ \t]+.*\n?)*))", re.MULTILINE)
+_CMAKE_PROGRAMS = re.compile(r"install\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE)
+_PACKAGE_DIR = re.compile(r"package_dir\s*=\s*\{\s*['\"]{2}\s*:\s*['\"]([\w./-]+)['\"]")
+_CFG_PACKAGE_DIR = re.compile(r"^package_dir\s*=\s*\n?\s*=\s*([\w./-]+)", re.MULTILINE)
+#: Build files read for script names and package_dir are small; bigger ones are skipped.
+MAX_BUILD_FILE_BYTES = 256 * 1024
+
+
 def python_files(root: Path) -> list[Path]:
-    """All ``*.py`` files under ``root`` (or ``root`` itself), sorted, build folders skipped."""
+    """The Python files under ``root`` (or ``root`` itself), sorted, build folders skipped:
+    every ``*.py``, and executables without the suffix — files with a Python shebang and
+    files a build file installs as scripts (setup.py/setup.cfg ``scripts``, CMake
+    ``install(PROGRAMS …)``) — which ROS packages ship as nodes."""
     if root.is_file():
         return [root]
     found: list[Path] = []
+    listed: set[Path] = set()  # build files sit above their scripts: walked first (top-down)
     for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=None):
         dirnames[:] = sorted(d for d in dirnames
                              if d not in SKIP_DIRS and not d.startswith(".")
                              and not d.endswith(".egg-info"))
+        folder = Path(dirpath)
+        listed |= _listed_scripts(folder, filenames)
         for name in sorted(filenames):
-            if name.endswith(".py"):
-                found.append(Path(dirpath) / name)
+            path = folder / name
+            if name.endswith(".py") or (
+                    "." not in name and (path in listed or _has_python_shebang(path))):
+                found.append(path)
     return sorted(found)
 
 
+def _small_text(path: Path, limit: int) -> str | None:
+    """The text of a regular file of at most ``limit`` bytes, else ``None`` (never blocks on
+    a FIFO, never raises)."""
+    try:
+        info = os.stat(path)
+        if not stat.S_ISREG(info.st_mode) or info.st_size > limit:
+            return None
+        with path.open("rb") as handle:
+            return handle.read(limit).decode("utf-8", "replace")
+    except OSError:
+        return None
+
+
+def _has_python_shebang(path: Path) -> bool:
+    try:
+        info = os.stat(path)
+        if not stat.S_ISREG(info.st_mode):
+            return False
+        with path.open("rb") as handle:
+            return bool(_SHEBANG.match(handle.read(SHEBANG_BYTES)))
+    except OSError:
+        return False
+
+
+def _listed_scripts(folder: Path, filenames: list[str]) -> set[Path]:
+    """Files the build files in ``folder`` install as executables."""
+    out: set[Path] = set()
+    names = set(filenames)
+    for build, pattern in (("setup.py", _SETUP_SCRIPTS), ("setup.cfg", _CFG_SCRIPTS),
+                           ("CMakeLists.txt", _CMAKE_PROGRAMS)):
+        if build not in names:
+            continue
+        text = _small_text(folder / build, MAX_BUILD_FILE_BYTES)
+        for match in pattern.finditer(text or ""):
+            for word in re.split(r"[\s,]+", match.group(1)):
+                word = word.strip("'\"")
+                if word and not word.startswith(("$", "DESTINATION")) and ".." not in word:
+                    out.add(folder / word)
+    return out
+
+
+def source_roots(folder: Path) -> set[Path]:
+    """Folders under a distribution root ``folder`` that hold top-level Python packages:
+    the folder itself, ``src``, and a ``package_dir={'': …}`` of setup.py/setup.cfg."""
+    out = {folder, folder / "src"}
+    for build, pattern in (("setup.py", _PACKAGE_DIR), ("setup.cfg", _CFG_PACKAGE_DIR)):
+        text = _small_text(folder / build, MAX_BUILD_FILE_BYTES)
+        for match in pattern.finditer(text or ""):
+            out.add(folder / match.group(1).strip("/"))
+    return out
+
+
+def _is_source_root(folder: Path) -> bool:
+    """Whether ``folder`` holds top-level packages (so it is not a package itself, even
+    with a stray ``__init__.py``): a distribution root, or a source root of the one above."""
+    if any((folder / marker).is_file() for marker in DIST_MARKERS):
+        return True
+    parent = folder.parent
+    return any((parent / marker).is_file() for marker in DIST_MARKERS) \
+        and folder in source_roots(parent)
+
+
 def module_name(path: Path, root: Path) -> tuple[str, bool]:
-    """Dotted import name of ``path`` (packages found by ``__init__.py``), and whether it is a package."""
+    """Dotted import name of ``path`` (packages found by ``__init__.py``), and whether it is a
+    package.
+
+    The walk up through ``__init__.py`` folders stops at a distribution root (a folder with
+    package.xml, setup.py, setup.cfg or pyproject.toml) and at its ``src``/``package_dir``
+    folder: Python computes import names from there, so a stray ``__init__.py`` in a ROS
+    package's root or in ``src/`` does not become part of every module's name.
+    """
     is_package = path.name == "__init__.py"
     parts = [] if is_package else [path.stem]
     folder = path.parent
-    while (folder / "__init__.py").is_file() and folder != folder.parent:
+    while (folder / "__init__.py").is_file() and folder != folder.parent \
+            and not _is_source_root(folder):
         parts.insert(0, folder.name)
         if folder == root:
             break

@@ -466,9 +466,14 @@ class CallSemantics:
         if name == "getattr" and len(pos) >= 2:
             names = pos[1].strings()
             if names:
+                if len(pos) > 2 and all(self._never_set(pos[0], n) for n in names):
+                    return pos[2]  # nothing can give the object that attribute: the default
                 out = join_all(self.load_attr(pos[0], n) for n in names)
                 return out.join(pos[2]) if len(pos) > 2 else out
             return TOP
+        if name == "type" and len(pos) == 1 and not args.kw and not pos[0].is_top \
+                and all(isinstance(a, Obj) for a in pos[0]):
+            return atoms(a.cls for a in pos[0])
         if name == "setattr" and len(pos) == 3:
             for attr in pos[1].strings() or ():
                 self.store_attr(pos[0], attr, pos[2])
@@ -480,6 +485,21 @@ class CallSemantics:
                                     "creates is not in the graph")
         self._escape(args)
         return TOP
+
+    def _never_set(self, value: Value, attr: str) -> bool:
+        """Whether no object ``value`` may be can have ``attr``: workspace objects whose
+        classes (and modelled library bases) define no such attribute and that no workspace
+        code assigns it to (``getattr(self, "x", default)`` is then the default)."""
+        if value.is_top or attr in self.program.stored_attrs:
+            return False
+        for atom in value:
+            if not isinstance(atom, Obj) or not isinstance(atom.cls, ClassAtom):
+                return False
+            order = self.mro(atom.cls)
+            if self.class_attr(order, attr, atom) is not None or any(
+                    isinstance(c, Extern) and self.lib.method(c.qualname, attr) for c in order):
+                return False
+        return True
 
     def call_str(self, receiver: Const, name: str, args: "Args") -> Value:
         recv = atoms([receiver])

@@ -113,6 +113,9 @@ class Analysis:
         self.falls_off: set[Task] = set()          # tasks whose body may end without return
         self.allocated: set[int] = set()           # cids instantiated by analysed code
         self.called: set[int] = set()              # fids with at least one task
+        #: Calls evaluated at least once, as (path, line, col_offset): what ``--explain`` reads
+        #: to tell a call the analysis reached from one it never got to.
+        self.reached_calls: set[tuple[str, int, int]] = set()
         self.diagnostics: list[Diagnostic] = []
         self._known: set[Task] = set()
         #: Accounts by module name; the work queue; the account each queued task is charged to.

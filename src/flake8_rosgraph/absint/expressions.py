@@ -10,6 +10,7 @@ import itertools
 
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
+from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
                      join_all)
@@ -242,6 +243,7 @@ class ExpressionSemantics:
     e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
 
     def e_Call(self, node: ast.Call) -> Value:
+        self.an.reached_calls.add((self.frame.module.path, node.lineno, node.col_offset))
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
@@ -268,12 +270,22 @@ class ExpressionSemantics:
                     kwargs.update((k.strings()[0], v) for k, v in mapping.items)
                 else:
                     star = True
-        return self.call(func, Args(args, kwargs, star), node)
+        result = self.call(func, Args(args, kwargs, star), node)
+        target = node.func
+        if isinstance(target, ast.Attribute) and target.attr in MUTATORS and not star \
+                and isinstance(target.value, (ast.Name, ast.Attribute)):
+            holder = self.eval(target.value)
+            if any(isinstance(a, (Seq, Coll, DictAtom)) for a in holder):
+                # Filled in place: rebind what the container was reached through.
+                self.assign(target.value, mutated(holder, target.attr, args, self.iter_elem))
+        return result
 
     # -- helpers ------------------------------------------------------------------------------
     def iter_elem(self, value: Value) -> Value:
         if value.is_top:
             return TOP
+        if all(may_be_filled_elsewhere(a) for a in value):
+            return TOP  # only ever seen empty here: what fills it is not seen
         out = BOTTOM
         for atom in value:
             if isinstance(atom, Seq):
@@ -302,7 +314,7 @@ class ExpressionSemantics:
         for atom in value:
             if isinstance(atom, Const):
                 seen.add(bool(atom.value))
-            elif isinstance(atom, Seq):
+            elif isinstance(atom, Seq) and not may_be_filled_elsewhere(atom):
                 seen.add(bool(atom.items))
             elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)):
                 seen.add(True)

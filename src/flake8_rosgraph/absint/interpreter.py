@@ -17,9 +17,10 @@ from .cfg import CFG, Bind, Eval, Return
 from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
 from .frame import Env, Frame
 from .program import Module
-from .values import (BOTTOM, TOP, ClassAtom, Extern, FuncAtom, ModuleAtom, Record, Seq, Value,
-                     atoms, const)
+from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Record,
+                     Seq, Value, atoms, const)
 from .calls import CallSemantics
+from .containers import with_item
 from .expressions import ExpressionSemantics
 from .instances import InstanceFacts
 from .objects import ObjectSemantics
@@ -174,8 +175,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             for node in ast.walk(op.target):
                 name = getattr(node, "name", None) or getattr(node, "rest", None)
                 if isinstance(name, str):
-                    whole = isinstance(node, ast.MatchAs) and node.pattern is None \
-                        and node is op.target
+                    # ``case P as x`` binds the whole subject, whatever ``P`` checks.
+                    whole = isinstance(node, ast.MatchAs) and node is op.target
                     self.store_name(name, subject if whole else TOP)
 
     def s_Assign(self, op: ast.Assign) -> None:
@@ -217,12 +218,24 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             self.store_name(alias.asname or alias.name, self.import_member(base, alias.name))
 
     def _star_import(self, base: str) -> None:
+        """``from base import *``: the names of ``__all__`` when the module defines it (read
+        from the heap: this task re-runs when it grows), else its public globals."""
         module = self.program.ensure(base)
         if module is None:
             return  # names from a library star import stay unknown (⊤ on lookup)
-        for name in sorted(module.globals):
-            if not name.startswith("_"):
-                self.store_name(name, self.import_member(base, name))
+        names = [n for n in module.globals | self.program.star_names(module)
+                 if not n.startswith("_")]
+        if "__all__" in module.globals:
+            listed = self.load_global(module, "__all__")
+            if listed.is_bottom:
+                return  # not computed yet
+            strings = self.iter_elem(listed).strings()
+            if strings:
+                names = list(strings)
+        for name in sorted(set(names)):
+            value = self.import_member(base, name)
+            if not value.is_bottom:  # a candidate the source never binds (yet) binds nothing
+                self.store_name(name, value)
 
     def s_FunctionDef(self, op: ast.FunctionDef) -> None:
         for dec in op.decorator_list:
@@ -266,8 +279,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 # through the variable or attribute (``self.qos.depth = 5``) that holds them.
                 self.assign(target.value, _with_field(holder, target.attr, value))
         elif isinstance(target, ast.Subscript):
-            self.eval(target.value)
-            self.eval(target.slice)
+            holder = self.eval(target.value)
+            key = self.eval(target.slice)
+            if isinstance(target.value, (ast.Name, ast.Attribute)) \
+                    and any(isinstance(a, (Seq, Coll, DictAtom)) for a in holder):
+                self.assign(target.value, with_item(holder, key, value))
         elif isinstance(target, (ast.Tuple, ast.List)):
             self._assign_seq(target.elts, value)
         elif isinstance(target, ast.Starred):
@@ -315,6 +331,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
 
     def load_name(self, name: str) -> Value:
         frame = self.frame
+        if name.startswith("$"):  # the CFG's temporaries (a loop's iterable, a match subject)
+            return frame.env.get(name, TOP)
         for overlay in reversed(frame.comp):
             if name in overlay:
                 return overlay[name]
@@ -338,7 +356,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
 
     def load_global(self, module: Module, name: str) -> Value:
         self.program.ensure(module.name)
-        if name in module.globals:
+        if name in module.globals or name in self.program.star_names(module):
             return self.an.read(("g", module.name, name), self.frame.task)
         if name == "__name__":
             return TOP
@@ -358,7 +376,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return atoms([ModuleAtom(full)])
         module = self.program.ensure(base)
         if module is not None:
-            return self.load_global(module, name) if name in module.globals else TOP
+            return self.load_global(module, name) \
+                if name in module.globals or name in self.program.star_names(module) else TOP
         return self.extern(full)
 
     def extern(self, qualname: str) -> Value:

@@ -28,6 +28,8 @@ class ObjectSemantics:
     def _attr_of(self, atom: Atom, attr: str) -> Value:
         task = self.frame.task
         if isinstance(atom, Obj):
+            if attr == "__class__":
+                return atoms([atom.cls])
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
@@ -127,8 +129,7 @@ class ObjectSemantics:
 
     # -- classes ----------------------------------------------------------------------------
     def user_bases(self, cid: int) -> list[int]:
-        value = self.an.heap.get(("bases", cid), BOTTOM)
-        return [a.cid for a in _flatten_bases(value) if isinstance(a, ClassAtom)]
+        return analysed_user_bases(self.an.heap, cid)
 
     def library_bases(self, cid: int) -> list[str]:
         return [a.qualname for a in self.mro(ClassAtom(cid)) if isinstance(a, Extern)]
@@ -165,6 +166,12 @@ class ObjectSemantics:
         bases = _flatten_bases(bases_value)
         seqs = [self._linearise(b, seen | {cls}, used) for b in bases] + [bases]
         return [cls] + _c3_merge(seqs)
+
+def analysed_user_bases(heap: dict, cid: int) -> list[int]:
+    """The workspace base classes of class ``cid``, as the analysis evaluated them."""
+    return [a.cid for a in _flatten_bases(heap.get(("bases", cid), BOTTOM))
+            if isinstance(a, ClassAtom)]
+
 
 def _flatten_bases(value: Value) -> list[Atom]:
     """Base classes in source order from the analysed ``(base, …)`` tuples of a class."""

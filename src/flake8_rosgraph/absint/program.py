@@ -121,6 +121,7 @@ class Program:
         self.stored_attrs: set[str] = set()
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
+        self._star_memo: dict[str, frozenset[str]] = {}
         for mod in self.modules.values():
             self.imports[mod.name] = _statement_imports(self, mod)
 
@@ -203,7 +204,8 @@ class Program:
                 elif isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
                     self.stored_attrs.add(node.attr)
                 elif isinstance(node, ast.alias):
-                    scope.bound.add((node.asname or node.name).split(".")[0])
+                    if node.name != "*":
+                        scope.bound.add((node.asname or node.name).split(".")[0])
                 elif isinstance(node, ast.Global):
                     scope.glob.update(node.names)
                 elif isinstance(node, ast.Nonlocal):
@@ -245,6 +247,23 @@ class Program:
             parent = outer.parent
 
     # -- queries ----------------------------------------------------------------------
+    def star_names(self, mod: Module) -> frozenset[str]:
+        """Names ``mod`` may bind through ``from … import *`` at its top level (transitively,
+        a superset: which ones it really binds is the analysis's business, ``__all__``
+        included)."""
+        known = self._star_memo.get(mod.name)
+        if known is not None:
+            return known
+        self._star_memo[mod.name] = frozenset()  # a cycle of star imports adds nothing
+        out: set[str] = set()
+        for stmt in mod.tree.body:
+            if isinstance(stmt, ast.ImportFrom) and any(a.name == "*" for a in stmt.names):
+                source = self.ensure(self.resolve_import(mod, stmt.module, stmt.level))
+                if source is not None:
+                    out |= source.globals | self.star_names(source)
+        self._star_memo[mod.name] = frozenset(out)
+        return self._star_memo[mod.name]
+
     def resolve_import(self, mod: Module, name: str | None, level: int) -> str:
         """The absolute dotted name of ``from <level dots><name> import …`` inside ``mod``."""
         if level == 0:

@@ -11,7 +11,8 @@ possibilities yields one entity per possibility.
 from __future__ import annotations
 
 import re
-from typing import Any, Iterable
+from dataclasses import dataclass
+from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
@@ -159,6 +160,7 @@ class GraphBuilder:
         self.program = analysis.program
         self.nodes: dict[tuple, RosNode] = {}          # (location, name, namespace) -> node
         self.by_object: dict[str, list[RosNode]] = {}  # allocation site -> nodes it may be
+        self.remaps: dict[int, tuple[names.RemapRule, ...]] = {}  # id(node) -> its cli_args rules
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
@@ -202,10 +204,16 @@ class GraphBuilder:
         else:
             ns_choices = [None if ns is None else names.normalize_namespace(ns)
                           for ns in _choices(namespaces)]
+        cli = command_line(eff.arg("cli_args"))
+        name_choices = _choices(eff.arg("name"))
+        if cli.name is not None:
+            name_choices = [cli.name]
+        if cli.namespace is not None:
+            ns_choices = [names.normalize_namespace(cli.namespace)]
         for obj in eff.arg("target"):
             if not isinstance(obj, Obj):
                 continue
-            for name in _choices(eff.arg("name")):
+            for name in name_choices:
                 for ns in ns_choices:
                     key = (location, name, ns)
                     node = self.nodes.get(key)
@@ -213,6 +221,8 @@ class GraphBuilder:
                         node = self.nodes[key] = RosNode(
                             name, ns, location, _class_name(self.program, obj),
                             conditional=eff.conditional, invalid=_node_problem(name, ns))
+                    if cli.remaps:
+                        self.remaps[id(node)] = cli.remaps
                     known = self.by_object.setdefault(obj.site, [])
                     if all(n is not node for n in known):
                         known.append(node)
@@ -284,7 +294,7 @@ class GraphBuilder:
         return out
 
     def _resolve(self, raw: str | None, node: RosNode) -> tuple[str | None, str | None]:
-        return resolve_name(raw, node)
+        return resolve_name(raw, node, self.remaps.get(id(node), ()))
 
     def callback_name(self, value: Value) -> str | None:
         found = []
@@ -296,10 +306,13 @@ class GraphBuilder:
         return sorted(found)[0] if found else None
 
 
-def resolve_name(raw: str | None, node: RosNode) -> tuple[str | None, str | None]:
-    """A written topic/service/action name expanded on ``node`` per rcl, and why it is invalid (if so).
+def resolve_name(raw: str | None, node: RosNode,
+                 remaps: Sequence[names.RemapRule] = ()) -> tuple[str | None, str | None]:
+    """A written topic/service/action name expanded on ``node`` per rcl (and the node's own
+    ``cli_args`` remaps), and why it is invalid (if so).
 
-    Unknown (``None``) when the name is, or when it is relative and the node's name or namespace is.
+    Unknown (``None``) when the name is, or when it is relative and the node's namespace is (or
+    it is private and the node's name is); a relative name depends on the namespace only.
     """
     if raw is None:
         return None, None
@@ -307,11 +320,76 @@ def resolve_name(raw: str | None, node: RosNode) -> tuple[str | None, str | None
         if raw.startswith("/"):
             check = names.validate_full_topic_name(raw)
             return raw, None if check.ok else check.reason
-        return None, None
+        if node.namespace is None or raw.startswith("~") or "{node}" in raw:
+            return None, None
+        # A relative name depends on the namespace only: an unknown node name (a
+        # placeholder stands for it) must not make it unknown.
+        expanded, check = names.expand_topic_name(raw, "unknown", node.namespace)
+        if expanded is None:
+            return raw, check.reason
+        return expanded, None if check.ok else check.reason
     expanded, check = names.expand_topic_name(raw, node.name, node.namespace)
     if expanded is None:
         return raw, check.reason
+    rule = names.first_remap_match(expanded, remaps, node.name, node.namespace)
+    if rule is not None:
+        expanded, check = names.expand_topic_name(rule.replacement, node.name, node.namespace)
+        if expanded is None:
+            return rule.replacement, check.reason
     return expanded, None if check.ok else check.reason
+
+
+@dataclass(frozen=True)
+class CommandLine:
+    """What a node's ``cli_args`` set: ``__node:=``/``__ns:=`` and remapping rules."""
+
+    name: str | None = None
+    namespace: str | None = None
+    remaps: tuple[names.RemapRule, ...] = ()
+
+
+#: ROS arguments that take a value which is not a remapping (skipped with it).
+_VALUED_ROS_ARGS = frozenset({"-p", "--param", "--params-file", "--log-level", "-e", "--enclave",
+                              "--log-config-file"})
+
+
+def command_line(value: Value) -> CommandLine:
+    """The ``--ros-args`` of a node's ``cli_args``, when they are one list of known strings
+    (anything else changes nothing: an unknown list is almost always empty in practice, and
+    guessing would cost every name of the node)."""
+    seqs = [a for a in value if isinstance(a, Seq)] if not value.is_top else []
+    if len(seqs) != 1 or len(list(value)) != 1:
+        return CommandLine()
+    words = [item.strings() for item in seqs[0].items]
+    if any(w is None or len(w) != 1 for w in words):
+        return CommandLine()
+    name = namespace = None
+    remaps: list[names.RemapRule] = []
+    inside, skip_next, rule_next = False, False, False
+    for (word,) in words:
+        if word == "--ros-args":
+            inside = True
+        elif word == "--":
+            inside = False
+        elif not inside:
+            continue
+        elif skip_next:
+            skip_next = False
+        elif word in ("-r", "--remap"):
+            rule_next = True
+        elif word in _VALUED_ROS_ARGS:
+            skip_next = True
+        elif rule_next and ":=" in word:
+            rule_next = False
+            source, _, target = word.partition(":=")
+            node, _, source = source.rpartition(":") if ":" in source else (None, "", source)
+            if source == "__ns" and not node:
+                namespace = target
+            elif source in ("__node", "__name") and not node:
+                name = target
+            else:
+                remaps.append(names.RemapRule(source, target, node or None))
+    return CommandLine(name, namespace, tuple(remaps))
 
 
 def _class_name(program, obj: Obj) -> str | None:

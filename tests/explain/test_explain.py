@@ -1,0 +1,270 @@
+"""``graph --explain``: every creation site missing from the graph, or known only partly, with
+the reasons the analysis recorded.
+
+The workspaces are written as files; each creation call carries its expected verdict as a
+trailing comment — ``# ok`` (in the graph, fully known), ``# unknown: <words>`` or
+``# missing: <words>`` (``<words>`` must appear in the reasons) — and every call of a
+creation method or class must carry one, so a site the report forgets fails as surely as a
+wrong reason.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+from flake8_rosgraph.analysis import analyse
+from flake8_rosgraph.explain import explain
+from test_workspace_discovery import write
+
+EXPECT = re.compile(r"#\s*(ok|unknown|missing)\b:?\s*(.*)$")
+
+PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3"><name>{name}</name><version>0.1.0</version>
+<description>d</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<exec_depend>rclpy</exec_depend><export><build_type>ament_python</build_type></export></package>
+"""
+
+
+def expectations(root: Path) -> dict[tuple[str, int], tuple[str, str]]:
+    out = {}
+    for path in sorted(root.rglob("*.py")):
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            match = EXPECT.search(line)
+            if match:
+                out[(path.relative_to(root).as_posix(), number)] = (match.group(1),
+                                                                     match.group(2).strip())
+    return out
+
+
+def check(root: Path) -> None:
+    graph, analysis = analyse(root)
+    report = explain(analysis, graph)
+    got = {(e.site.path, e.site.line): e for e in report.explanations}
+    wanted = expectations(root)
+    assert sorted(got) == sorted(wanted), "sites found differ from the annotated ones"
+    for where, (status, words) in wanted.items():
+        item = got[where]
+        want = "complete" if status == "ok" else status
+        assert item.status == want, (where, item)
+        assert words in " ".join(item.reasons), (where, item.reasons)
+
+
+FLEET = {
+    "fleet/package.xml": PACKAGE_XML.format(name="fleet"),
+    "fleet/setup.py": """
+        from setuptools import setup
+        setup(name='fleet', packages=['fleet'],
+              entry_points={'console_scripts': ['driver = fleet.driver:main']})
+    """,
+    "fleet/fleet/__init__.py": "",
+    "fleet/fleet/base.py": """
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+
+        class BaseDriver(Node):
+            def __init__(self, name, namespace):
+                super().__init__(name, namespace=namespace)  # ok
+                self.status = self.create_publisher(String, 'status', 10)  # ok
+                for topic in self.get_parameter('extra_topics').value:
+                    self.create_publisher(String, topic, 10)  # unknown: loop variable `topic`
+                self.create_timer(0.5, self.tick)  # ok
+
+            def tick(self):
+                pass
+
+            def shutdown_hook(self):
+                raise NotImplementedError('subclasses define it')
+                self.create_publisher(String, 'bye', 1)  # missing: never reaches this line
+
+            def debug_topics(self):
+                self.create_publisher(String, 'debug', 1)  # missing: method BaseDriver.debug_topics is never called
+    """,
+    "fleet/fleet/driver.py": """
+        import rclpy
+        from std_srvs.srv import Trigger
+
+        from fleet.base import BaseDriver
+        from .calibration import Calibrator
+
+
+        class Driver(BaseDriver):
+            def __init__(self):
+                super().__init__('driver', '/robot1')
+                self.srv = self.create_service(Trigger, 'reset', self.on_reset)  # ok
+                self.cli = self.create_client(Trigger, self.get_parameter('peer').value)  # unknown: ROS parameter
+
+
+            def on_reset(self, request, response):
+                self.shutdown_hook()
+                return response
+
+
+        class Spare(BaseDriver):
+            def __init__(self):
+                super().__init__('spare', '/robot2')
+                self.create_client(Trigger, 'spare_reset')  # ok
+
+
+        def attach(node):
+            node.create_subscription(Trigger, 'never', print, 10)  # missing: parameter `node`
+
+
+        def main():
+            rclpy.init()
+            driver = Driver()
+            rclpy.spin(driver)
+    """,
+    "fleet/fleet/helpers.py": """
+        from rclpy.qos import qos_profile_sensor_data
+        from std_msgs.msg import String
+        from .does_not_exist import topic_table
+
+
+        class Recorder:
+            def start(self, node):
+                node.create_subscription(String, 'log', self.on_log, 10)  # missing: class Recorder is never instantiated
+
+            def on_log(self, msg):
+                pass
+    """,
+    "fleet/fleet/pure.py": """
+        def make_timer(node):
+            return node.create_timer(1.0, print)  # missing: imports no modelled library
+    """,
+    "fleet/fleet/calibration.py": """
+        class Calibrator:
+            pass
+    """,
+}
+
+
+def test_reasons_on_a_package(tmp_path: Path) -> None:
+    check(write(tmp_path, FLEET))
+
+
+def test_unresolved_workspace_import_is_named(tmp_path: Path) -> None:
+    root = write(tmp_path, FLEET)
+    graph, analysis = analyse(root)
+    report = explain(analysis, graph)
+    recorder = next(e for e in report.explanations if e.site.path.endswith("helpers.py"))
+    assert "imports not resolved in the workspace: .does_not_exist" in recorder.reasons
+
+
+def test_launch_node_of_launch_ros_is_not_a_site(tmp_path: Path) -> None:
+    """``Node`` of launch_ros is not rclpy's: names are resolved through imports."""
+    root = write(tmp_path, {
+        "demo/package.xml": PACKAGE_XML.format(name="demo"),
+        "demo/launch/demo.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+
+            def generate_launch_description():
+                return LaunchDescription([Node(package='demo', executable='talker')])
+        """,
+        "demo/demo/talker.py": """
+            import rclpy
+            from rclpy.node import Node as RosNode
+
+
+            def main():
+                rclpy.init()
+                node = rclpy.create_node('talker')  # ok
+                other = RosNode('other', namespace=None)  # ok
+                rclpy.spin(node)
+        """,
+    })
+    check(root)
+
+
+def test_cli_prints_gaps_and_count(tmp_path: Path) -> None:
+    root = write(tmp_path, FLEET)
+    run = subprocess.run([sys.executable, "-m", "flake8_rosgraph", "graph", str(root),
+                          "--explain", "--verbose"], capture_output=True, text=True, check=True)
+    lines = run.stderr.splitlines()
+    assert any(line.startswith("fleet/fleet/helpers.py:8:9: node.create_subscription: not in the "
+                               "graph: class Recorder is never instantiated") for line in lines)
+    assert lines[-1].startswith("creation sites: 12, in the graph and fully known: 5 (42%), with unknowns: 2, not in the graph: 5")
+    quiet = subprocess.run([sys.executable, "-m", "flake8_rosgraph", "graph", str(root)],
+                           capture_output=True, text=True, check=True)
+    assert "creation sites" not in quiet.stderr and "not in the graph" not in quiet.stderr
+
+
+def test_launch_file_not_followed_is_said(tmp_path: Path) -> None:
+    """``graph --launch`` names what it could not follow instead of printing a partial
+    system silently; a fully followed file adds nothing."""
+    root = write(tmp_path, dict(FLEET, **{
+        "fleet/launch/dynamic.launch.py": """
+            from launch import LaunchDescription
+            from launch.actions import OpaqueFunction
+            from launch_ros.actions import Node
+
+
+            def spawn(context):
+                return [Node(package='fleet', executable='driver')]
+
+
+            def generate_launch_description():
+                return LaunchDescription([OpaqueFunction(function=spawn)])
+        """,
+        "fleet/launch/plain.launch.py": """
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+
+            def generate_launch_description():
+                return LaunchDescription([Node(package='fleet', executable='driver')])
+        """,
+    }))
+    base = [sys.executable, "-m", "flake8_rosgraph", "graph", str(root), "--launch"]
+    run = subprocess.run(base + [str(root / "fleet/launch/dynamic.launch.py")],
+                         capture_output=True, text=True, check=True)
+    assert "fleet/launch/dynamic.launch.py:11: warning: OpaqueFunction is not followed" in run.stderr
+    assert "dynamic.launch.py is not fully followed: 1 construct(s) not followed" in run.stderr
+    plain = subprocess.run(base + [str(root / "fleet/launch/plain.launch.py")],
+                           capture_output=True, text=True, check=True)
+    assert "not fully followed" not in plain.stderr and "not followed" not in plain.stderr
+
+
+def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> None:
+    """A node namespace from an argument, the relative names it takes away, a type chosen
+    by a module-level condition, and a name built from a run-time call."""
+    check(write(tmp_path, {
+        "tester/package.xml": PACKAGE_XML.format(name="tester"),
+        "tester/tester/__init__.py": "",
+        "tester/tester/tester.py": """
+            import os
+            import sys
+
+            import rclpy
+            from rclpy.node import Node
+
+            if os.environ.get('ROS_DISTRO') == 'humble':
+                from geometry_msgs.msg import Twist as CmdVel
+            else:
+                from geometry_msgs.msg import TwistStamped as CmdVel
+            from std_msgs.msg import String
+
+
+            class Tester(Node):
+                def __init__(self, namespace):
+                    super().__init__('tester', namespace=namespace)  # unknown: parameter `namespace` of __init__
+                    self.create_publisher(String, 'initialpose', 1)  # unknown: `initialpose` is relative to the namespace of its node
+                    self.create_publisher(String, '/abs/goal', 1)  # ok
+
+
+            class Driver(Node):
+                def __init__(self):
+                    super().__init__('driver_{}'.format(os.getpid()))  # unknown: built from `'driver_{}'.format(os.getpid())`
+                    self.create_publisher(CmdVel, '/cmd_vel', 1)  # unknown: `CmdVel` is bound 2 times at module level
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Tester(sys.argv[1]))
+                rclpy.spin(Driver())
+        """,
+    }))
