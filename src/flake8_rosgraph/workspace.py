@@ -12,6 +12,7 @@ import ast
 import io
 import os
 import re
+import stat
 import sys
 import tokenize
 from dataclasses import dataclass
