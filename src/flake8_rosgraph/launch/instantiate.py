@@ -77,9 +77,11 @@ class Instantiator:
                         system.problems.append(Diagnostic(file.location.path, file.location.line, problem))
             if launched.target.status != "found":
                 continue
+            classes = set(launched.target.node_classes)
             for site in launched.target.node_sites:
                 for code in by_location.get(site, ()):
-                    system.instances.append(self.instance(launched, code))
+                    if (site, code.cls) in classes:
+                        system.instances.append(self.instance(launched, code))
 
     def instance(self, launched: LaunchedNode, code: RosNode) -> Instance:
         name, namespace = _node_name(launched, code), _namespace(launched, code)
@@ -115,7 +117,10 @@ class Instantiator:
         raw = entity.raw_name
         if raw is None:
             return None, None, None
-        if name is None or namespace is None:
+        if name is None or namespace is None or not names.validate_node_name(name).ok \
+                or not names.validate_namespace(namespace).ok:
+            # An unknown or invalid launch name/namespace (ROS203 reports the latter at the
+            # launch file) leaves absolute names as written and the rest unknown.
             return (raw, None, None) if raw.startswith("/") else (None, None, None)
         expanded, check = names.expand_topic_name(raw, name, namespace)
         if expanded is None:

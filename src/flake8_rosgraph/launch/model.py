@@ -62,6 +62,10 @@ class ExecutableRef:
     node_sites: tuple[Location, ...] = ()
     #: Node sites whose code allows undeclared parameters (any override is accepted).
     open_parameter_sites: tuple[Location, ...] = ()
+    #: ``(site, class)`` of every node object the executable creates: a base class's
+    #: ``super().__init__`` site is shared by its subclasses, and only the classes the
+    #: executable instantiates are its nodes.
+    node_classes: tuple[tuple[Location, str | None], ...] = ()
     #: ``module:function`` the executable runs, for the JSON output.
     entry: str | None = None
     #: The executables the package does have, for the ROS201 message.

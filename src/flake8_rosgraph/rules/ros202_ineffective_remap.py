@@ -10,6 +10,13 @@ from .base import Finding, Rule, RuleConfig
 
 #: Names rcl uses on every node without the code asking for them; remapping them is legitimate.
 _IMPLICIT = frozenset({"/rosout", "/parameter_events"})
+#: The node's own services and topics under its private prefix (parameter services, type
+#: description, lifecycle), created without the code naming them.
+_IMPLICIT_PRIVATE = frozenset({
+    "describe_parameters", "get_parameter_types", "get_parameters", "list_parameters",
+    "set_parameters", "set_parameters_atomically", "get_type_description",
+    "change_state", "get_state", "get_available_states", "get_available_transitions",
+    "get_transition_graph", "transition_event"})
 
 
 def _judgeable(instance: Instance, remap: Remap) -> bool:
@@ -23,7 +30,9 @@ def _judgeable(instance: Instance, remap: Remap) -> bool:
     if expanded is None:
         return False  # ROS203 reports an invalid source
     private = names.fqn(node.name, node.namespace) + "/"
-    return expanded not in _IMPLICIT and not expanded.startswith(private)
+    if expanded.startswith(private) and expanded[len(private):] in _IMPLICIT_PRIVATE:
+        return False
+    return expanded not in _IMPLICIT
 
 
 class IneffectiveRemap(Rule):
