@@ -264,3 +264,72 @@ def test_a_readable_include_argument_replaces_the_default(tmp_path, analyse_root
         "robot.launch.py": including("{'driver': 'lidar'}.items()")})
     [node] = analyse_root(root).system("robot.launch.py").nodes
     assert (node.executable, node.target.status) == ("lidar", "found")
+
+
+# -- ROS205 unmatched-parameter-section -----------------------------------------------------------
+
+SENSOR_PARAMS = """
+    /**:
+      ros__parameters:
+        frame_id: sensor_link
+    robot:
+      front_lidar:
+        ros__parameters:
+          range_max: 25.0
+    /robot/*_camera:
+      ros__parameters:
+        exposure: 0.02
+    lidar:
+      ros__parameters:
+        range_max: 12.0
+    """
+
+SENSORS_LAUNCH = """
+    import os
+
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        params = os.path.join(get_package_share_directory('drivers'), 'config', 'sensors.yaml')
+        return LaunchDescription([
+            Node(package='drivers', executable='lidar', name={lidar}, namespace='robot',
+                 parameters=[params]),
+            Node(package='drivers', executable='camera', name='rear_camera', namespace='robot',
+                 parameters=[params]),
+        ])
+    """
+
+
+def sensors(tmp_path: Path, lidar: str, **launch: str) -> Path:
+    return workspace(tmp_path, {"sensors.launch.py": SENSORS_LAUNCH.format(lidar=lidar), **launch},
+                     extra={"config/sensors.yaml": SENSOR_PARAMS})
+
+
+def test_a_section_no_started_node_matches(tmp_path, analyse_root):
+    root = sensors(tmp_path, "'front_lidar'")
+    assert findings(analyse_root, root, ("ROS205",)) == [
+        ("ROS205", "src/drivers/config/sensors.yaml:11",
+         "parameter section '/lidar' matches no node started with this file "
+         "(/robot/front_lidar, /robot/rear_camera): its 1 value is ignored")]
+
+
+def test_a_section_another_launch_file_uses_is_matched(tmp_path, analyse_root):
+    root = sensors(tmp_path, "'front_lidar'", **{"bench.launch.py": launch_py(
+        "Node(package='drivers', executable='lidar', "
+        "parameters=[PathJoinSubstitution([FindPackageShare('drivers'), 'config', 'sensors.yaml'])])"
+    ).replace("from launch_ros.actions import Node\n",
+              "from launch.substitutions import PathJoinSubstitution\n"
+              "from launch_ros.actions import Node\nfrom launch_ros.substitutions import FindPackageShare\n")})
+    assert findings(analyse_root, root, ("ROS205",)) == []
+
+
+def test_a_node_name_the_analysis_cannot_know_keeps_the_file_quiet(tmp_path, analyse_root):
+    root = sensors(tmp_path, "LaunchConfiguration('lidar_name')")
+    launch = root / "src/drivers/launch/sensors.launch.py"
+    launch.write_text(launch.read_text().replace(
+        "from launch_ros.actions import Node\n",
+        "from launch.substitutions import LaunchConfiguration\nfrom launch_ros.actions import Node\n"))
+    assert findings(analyse_root, root, ("ROS205",)) == []

@@ -70,6 +70,8 @@ class Instantiator:
             for file in launched.param_files:
                 problem = f"parameter file '{file.written}' is not a file in the workspace" \
                     if file.path is None else self.sections(file.path)
+                if file.path is not None and not isinstance(problem, str):
+                    system.parameter_files[file.path] = problem
                 if isinstance(problem, str):
                     key = (file.location.path, file.location.line, problem)
                     if key not in reported:

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..graph.model import Diagnostic, Location, RosNode
+from .param_files import Section
 
 
 @dataclass(frozen=True, order=True)
@@ -137,6 +138,8 @@ class System:
     arguments: dict[str, str | None] = field(default_factory=dict)
     problems: list[Diagnostic] = field(default_factory=list)
     instances: list[Instance] = field(default_factory=list)
+    #: The sections of every parameter file its nodes are given (root-relative path → sections).
+    parameter_files: dict[str, list[Section]] = field(default_factory=dict)
 
     @property
     def complete(self) -> bool:

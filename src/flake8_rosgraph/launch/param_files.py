@@ -25,6 +25,8 @@ class Section:
 
     pattern: str
     settings: tuple[tuple[str, Any, Location], ...]
+    #: The line of the key that holds ``ros__parameters`` (the node key), for ROS205.
+    location: Location | None = None
 
     def matches(self, fqn: str) -> bool:
         return _pattern_regex(self.pattern).fullmatch(fqn) is not None
@@ -57,7 +59,7 @@ def _flatten(node: YNode, prefix: str, path: str, out: list[tuple[str, Any, Loca
             out.append((name, value.plain(), Location(path, node.key_lines.get(key, value.line), 1)))
 
 
-def _sections(node: YNode, tokens: list[str], path: str, out: list[Section]) -> None:
+def _sections(node: YNode, tokens: list[str], path: str, out: list[Section], line: int = 1) -> None:
     if not isinstance(node.value, dict):
         return
     for key, value in node.value.items():
@@ -65,9 +67,9 @@ def _sections(node: YNode, tokens: list[str], path: str, out: list[Section]) -> 
             pattern = "/".join(t.strip("/") for t in tokens if t.strip("/"))
             settings: list[tuple[str, Any, Location]] = []
             _flatten(value, "", path, settings)
-            out.append(Section("/" + pattern, tuple(settings)))
+            out.append(Section("/" + pattern, tuple(settings), Location(path, line, 1)))
         else:
-            _sections(value, tokens + [key], path, out)
+            _sections(value, tokens + [key], path, out, node.key_lines.get(key, value.line))
 
 
 def read_param_file(root: Path, path: str) -> list[Section]:

@@ -1,4 +1,4 @@
-"""The graph rules ROS001–ROS010 and ROS201–ROS204: one module per rule, run together over one extracted graph.
+"""The graph rules ROS001–ROS010 and ROS201–ROS205: one module per rule, run together over one extracted graph.
 
 ``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
 SARIF writer, the generated ``docs/rules.md``) reads, in code order.
@@ -23,6 +23,7 @@ from .ros201_unknown_executable import UnknownExecutable
 from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
+from .ros205_unmatched_parameter_section import UnmatchedParameterSection
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -39,6 +40,7 @@ RULES: tuple[Rule, ...] = (
     IneffectiveRemap(),
     InvalidLaunchName(),
     UnknownParameter(),
+    UnmatchedParameterSection(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}
