@@ -333,3 +333,15 @@ def test_a_node_name_the_analysis_cannot_know_keeps_the_file_quiet(tmp_path, ana
         "from launch_ros.actions import Node\n",
         "from launch.substitutions import LaunchConfiguration\nfrom launch_ros.actions import Node\n"))
     assert findings(analyse_root, root, ("ROS205",)) == []
+
+
+def test_a_launch_file_not_followed_completely_keeps_its_files_quiet(tmp_path, analyse_root):
+    root = sensors(tmp_path, "'front_lidar'")
+    launch = root / "src/drivers/launch/sensors.launch.py"
+    launch.write_text(launch.read_text().replace(
+        "    ])\n",
+        "        OpaqueFunction(function=lambda context: [Node(package='drivers', executable='pair',\n"
+        "                                                      parameters=[params])]),\n"
+        "    ])\n").replace("from launch import LaunchDescription\n",
+                             "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction\n"))
+    assert findings(analyse_root, root, ("ROS205",)) == []

@@ -43,8 +43,11 @@ def _uses(systems: list[System]) -> dict[str, _FileUse]:
     uses: dict[str, _FileUse] = {}
     unresolved: list[str] = []
     for system in systems:
+        # An include or OpaqueFunction not followed, or a parameter file not resolved, may hand
+        # a file this system passes to nodes the analysis does not see.
+        incomplete = bool(system.problems)
         for launched in system.nodes:
-            fqns = _fqns(system, launched)
+            fqns = None if incomplete else _fqns(system, launched)
             for ref in launched.param_files:
                 if ref.path is None:
                     unresolved.append(ref.written)
@@ -57,7 +60,7 @@ def _uses(systems: list[System]) -> dict[str, _FileUse]:
                 else:
                     use.fqns.update(fqns)
     for path, use in uses.items():
-        # a reference the analysis could not resolve may well be this file, if it names it
+        # a reference the analysis could not resolve elsewhere may well be this file, if it names it
         if any(posixpath.basename(path) in written for written in unresolved):
             use.unknown = True
     return uses
@@ -83,8 +86,10 @@ class UnmatchedParameterSection(Rule):
     file starts each node. It stays quiet when a node started with the file
     has a name or namespace the analysis cannot determine (from a launch
     argument without a default, or a C++ executable whose name the launch
-    file does not set), and for files the launch files pass in ways it
-    cannot follow (`RewrittenYaml`, an `OpaqueFunction`). Only parameter
+    file does not set), and for files passed by a launch file that is not
+    followed completely (an include or `OpaqueFunction` it cannot follow,
+    a parameter file it cannot resolve such as `RewrittenYaml`): unseen
+    nodes may receive the file there. Only parameter
     files that some launch file passes are judged. The finding is located
     in the YAML file, so flake8 (which sees only `.py` files) does not show
     it; use `flake8-rosgraph check` or SARIF.
