@@ -105,7 +105,8 @@ SENSORS = {
             executor.spin()
         """,
 }
-SCRIPTS = ("lidar = drivers.lidar:main", "camera = drivers.camera:main", "pair = drivers.pair:main")
+SCRIPTS = ("lidar = drivers.lidar:main", "camera = drivers.camera:main", "pair = drivers.pair:main",
+           "driver = drivers.driver:main", "mapper = drivers.mapper:main")
 
 
 def workspace(tmp_path: Path, launch: dict[str, str], modules: dict[str, str] = SENSORS,
@@ -345,3 +346,79 @@ def test_a_launch_file_not_followed_completely_keeps_its_files_quiet(tmp_path, a
         "    ])\n").replace("from launch import LaunchDescription\n",
                              "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction\n"))
     assert findings(analyse_root, root, ("ROS205",)) == []
+
+
+# -- a launch file that starts one driver is not a closed system ----------------------------------
+
+ROBOT = {
+    "driver.py": """
+        import rclpy
+        from nav_msgs.msg import Odometry
+        from rclpy.node import Node
+        from sensor_msgs.msg import LaserScan
+
+
+        class Driver(Node):
+            def __init__(self):
+                super().__init__('driver')
+                self.odom = self.create_publisher(Odometry, '/odom', 10)
+                self.scan = self.create_publisher(LaserScan, 'scan', 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Driver())
+        """,
+    "mapper.py": """
+        import rclpy
+        from nav_msgs.msg import Odometry
+        from rclpy.node import Node
+        from sensor_msgs.msg import LaserScan
+
+
+        class Mapper(Node):
+            def __init__(self):
+                super().__init__('mapper')
+                self.create_subscription(Odometry, '/odom', self.on_odom, 10)
+                self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+
+            def on_odom(self, msg):
+                self.get_logger().info('odom')
+
+            def on_scan(self, msg):
+                self.get_logger().info('scan')
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Mapper())
+        """,
+}
+
+
+def robot(tmp_path: Path, launch: dict[str, str]) -> Path:
+    return workspace(tmp_path, launch, modules=ROBOT)
+
+
+def test_a_driver_launched_alone_in_a_namespace_keeps_its_outputs_as_interfaces(tmp_path, analyse_root):
+    root = robot(tmp_path, {"driver.launch.py": launch_py(
+        "Node(package='drivers', executable='driver', namespace='robot')")})
+    assert findings(analyse_root, root, ("ROS0",)) == []
+
+
+def test_a_typo_between_nodes_of_one_launched_system_is_still_reported(tmp_path, analyse_root):
+    modules = dict(ROBOT, **{"mapper.py": ROBOT["mapper.py"].replace("'scan'", "'scna'")})
+    root = workspace(tmp_path, {"robot.launch.py": launch_py(
+        "Node(package='drivers', executable='driver', namespace='robot')",
+        "Node(package='drivers', executable='mapper', namespace='robot')")}, modules=modules)
+    assert [(code, where) for code, where, _ in findings(analyse_root, root, ("ROS0",))] == [
+        ("ROS001", "src/drivers/drivers/driver.py:11"), ("ROS003", "src/drivers/drivers/mapper.py:11")]
+
+
+def test_a_typo_the_launch_file_does_not_rename_is_still_reported(tmp_path, analyse_root):
+    modules = dict(ROBOT, **{"mapper.py": ROBOT["mapper.py"].replace("'scan'", "'scna'")})
+    root = workspace(tmp_path, {"driver.launch.py": launch_py(
+        "Node(package='drivers', executable='driver')")}, modules=modules)
+    found = findings(analyse_root, root, ("ROS0",))
+    assert [(code, where) for code, where, _ in found] == [
+        ("ROS001", "src/drivers/drivers/driver.py:11"), ("ROS003", "src/drivers/drivers/mapper.py:11")]
