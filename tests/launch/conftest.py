@@ -40,3 +40,9 @@ def analyse(root: Path) -> Analysed:
 @pytest.fixture(scope="session")
 def ws() -> Analysed:
     return analyse(WS)
+
+
+@pytest.fixture
+def analyse_root():
+    """``analyse`` for test modules that build their own workspace under ``tmp_path``."""
+    return analyse

@@ -120,11 +120,12 @@ class Executor:
                 if found is None:
                     raise Unresolved(f"launch argument '{subst.name}' has no static value")
                 return found
-            if subst.default is not None:
-                return self.value(subst.default, scope)
             if scope.opaque:
+                # The including file may pass it: its value, not this placeholder default.
                 raise Unresolved(f"launch argument '{subst.name}' comes from an include "
                                  f"whose arguments are unknown")
+            if subst.default is not None:
+                return self.value(subst.default, scope)
             raise Unresolved(f"launch argument '{subst.name}' has no default")
         if isinstance(subst, PkgShare):
             package = self.value(subst.package, scope)

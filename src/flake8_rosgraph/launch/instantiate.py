@@ -71,7 +71,7 @@ class Instantiator:
                 problem = f"parameter file '{file.written}' is not a file in the workspace" \
                     if file.path is None else self.sections(file.path)
                 if file.path is not None and not isinstance(problem, str):
-                    system.param_sections[file.path] = problem
+                    system.parameter_files[file.path] = problem
                 if isinstance(problem, str):
                     key = (file.location.path, file.location.line, problem)
                     if key not in reported:
@@ -79,9 +79,11 @@ class Instantiator:
                         system.problems.append(Diagnostic(file.location.path, file.location.line, problem))
             if launched.target.status != "found":
                 continue
+            classes = set(launched.target.node_classes)
             for site in launched.target.node_sites:
                 for code in by_location.get(site, ()):
-                    system.instances.append(self.instance(launched, code))
+                    if (site, code.cls) in classes:
+                        system.instances.append(self.instance(launched, code))
 
     def instance(self, launched: LaunchedNode, code: RosNode) -> Instance:
         name, namespace = _node_name(launched, code), _namespace(launched, code)
@@ -120,7 +122,10 @@ class Instantiator:
         raw = entity.raw_name
         if raw is None:
             return None, None, None
-        if name is None or namespace is None:
+        if name is None or namespace is None or not names.validate_node_name(name).ok \
+                or not names.validate_namespace(namespace).ok:
+            # An unknown or invalid launch name/namespace (ROS203 reports the latter at the
+            # launch file) leaves absolute names as written and the rest unknown.
             return (raw, None, None) if raw.startswith("/") else (None, None, None)
         expanded, check = names.expand_topic_name(raw, name, namespace)
         if expanded is None:
@@ -191,3 +196,51 @@ def apply_systems(graph: RosGraph, systems: list[System], placeholders: bool) ->
                    list(graph.diagnostics))
     out.diagnostics = sorted(set(out.diagnostics) | {d for s in systems for d in s.problems})
     return out
+
+
+class LaunchScopes:
+    """Which launch systems started each node of a judged graph, and which names launch changed.
+
+    A launch file that starts a driver in a namespace (or remaps it) is not a
+    closed system: names it changed are judged within that system, and toward
+    nodes it does not start they are interfaces — the namespace is a
+    deployment choice, not a slip (issue 10, cause 5).
+    """
+
+    def __init__(self, systems: list[System]) -> None:
+        self._systems: dict[tuple, set[str]] = {}
+        self._code: dict[tuple, RosNode] = {}
+        self._written: set[tuple[str, str]] = set()
+        for system in systems:
+            for instance in system.instances:
+                key = _node_key(instance.node)
+                self._systems.setdefault(key, set()).add(system.launch_file)
+                self._code.setdefault(key, instance.code)
+                self._written.update((e.kind, e.name) for e in instance.code.entities
+                                     if e.name is not None)
+
+    def written_name(self, kind: str, name: str) -> bool:
+        """Whether a launched node's code, as written (run without its launch file), uses ``name``."""
+        return (kind, name) in self._written
+
+    def systems_of(self, node: RosNode) -> frozenset[str]:
+        """The launch files whose systems start ``node`` (empty for a node as written in code)."""
+        if node.launch is None:
+            return frozenset()
+        return frozenset(self._systems.get(_node_key(node), ()))
+
+    def renamed(self, node: RosNode, entity: Entity) -> bool:
+        """Whether launch gave ``entity`` (of the launched ``node``) a name its code does not have."""
+        code = self._code.get(_node_key(node)) if node.launch is not None else None
+        if code is None:
+            return False
+        return all(e.name != entity.name for e in code.entities
+                   if e.kind == entity.kind and e.location == entity.location)
+
+    def together(self, a: RosNode, b: RosNode) -> bool:
+        """Whether the two nodes run together as far as launch says: both as written in code, or
+        started by one launch system."""
+        first, second = self.systems_of(a), self.systems_of(b)
+        if not first and not second:
+            return True
+        return bool(first & second)

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..graph.model import Diagnostic, Location, RosNode
+from .param_files import Section
 
 
 @dataclass(frozen=True, order=True)
@@ -62,6 +63,10 @@ class ExecutableRef:
     node_sites: tuple[Location, ...] = ()
     #: Node sites whose code allows undeclared parameters (any override is accepted).
     open_parameter_sites: tuple[Location, ...] = ()
+    #: ``(site, class)`` of every node object the executable creates: a base class's
+    #: ``super().__init__`` site is shared by its subclasses, and only the classes the
+    #: executable instantiates are its nodes.
+    node_classes: tuple[tuple[Location, str | None], ...] = ()
     #: ``module:function`` the executable runs, for the JSON output.
     entry: str | None = None
     #: The executables the package does have, for the ROS201 message.
@@ -133,9 +138,8 @@ class System:
     arguments: dict[str, str | None] = field(default_factory=dict)
     problems: list[Diagnostic] = field(default_factory=list)
     instances: list[Instance] = field(default_factory=list)
-    #: The parameter files the system hands to nodes, read (root-relative path → its
-    #: ``launch.param_files.Section`` list); files that could not be read are absent.
-    param_sections: dict[str, list[Any]] = field(default_factory=dict)
+    #: The sections of every parameter file its nodes are given (root-relative path → sections).
+    parameter_files: dict[str, list[Section]] = field(default_factory=dict)
 
     @property
     def complete(self) -> bool:

@@ -26,7 +26,8 @@ class Section:
 
     pattern: str
     settings: tuple[tuple[str, Any, Location], ...]
-    location: Location
+    #: The line of the key that holds ``ros__parameters`` (the node key), for ROS205.
+    location: Location | None = None
 
     def matches(self, fqn: str) -> bool:
         return _pattern_regex(self.pattern).fullmatch(fqn) is not None
@@ -68,9 +69,9 @@ def _sections(node: YNode, tokens: list[str], path: str, out: list[Section], lin
             pattern = "/".join(t.strip("/") for t in tokens if t.strip("/"))
             settings: list[tuple[str, Any, Location]] = []
             _flatten(value, "", path, settings)
-            out.append(Section("/" + pattern, tuple(settings), Location(path, line if tokens else key_line, 1)))
+            out.append(Section("/" + pattern, tuple(settings), Location(path, line, 1)))
         else:
-            _sections(value, tokens + [key], path, out, key_line)
+            _sections(value, tokens + [key], path, out, node.key_lines.get(key, value.line))
 
 
 def read_param_file(root: Path, path: str) -> list[Section]:

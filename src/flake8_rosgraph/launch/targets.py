@@ -12,6 +12,8 @@ from __future__ import annotations
 from collections import deque
 
 from ..absint.engine import Analysis
+from ..absint.values import Obj
+from ..graph.builder import _class_name
 from ..graph.model import Location
 from .model import ExecutableRef
 from .packages import Executable, PackageIndex
@@ -60,16 +62,20 @@ class TargetIndex:
                 if f.module is module and f.parent is None and f.cls is None
                 and f.qualname == exe.function}
         starts.extend(t for t in self.analysis.effects if t[0] == "fn" and t[1] in fids)
-        sites, open_sites = self.node_sites(starts)
+        sites, open_sites, classes = self.node_sites(starts)
         if not sites:
             return ExecutableRef("no-python", entry=entry)
-        return ExecutableRef("found", tuple(sites), tuple(open_sites), entry=entry)
+        return ExecutableRef("found", tuple(sites), tuple(open_sites), tuple(classes), entry=entry)
 
-    def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location]]:
+    def node_sites(self, starts: list[tuple]
+                   ) -> tuple[list[Location], list[Location], list[tuple[Location, str | None]]]:
+        """The node sites reachable from ``starts``, those open to any parameter, and the
+        ``(site, class)`` of each node object created there."""
         seen = set(starts)
         queue = deque(starts)
         sites: set[Location] = set()
         open_sites: set[Location] = set()
+        classes: set[tuple[Location, str | None]] = set()
         while queue:
             task = queue.popleft()
             for eff in self.analysis.effects.get(task, {}).values():
@@ -77,6 +83,8 @@ class TargetIndex:
                     continue
                 site = Location(eff.path, eff.line, eff.column)
                 sites.add(site)
+                classes.update((site, _class_name(self.analysis.program, obj))
+                               for obj in eff.arg("target") if isinstance(obj, Obj))
                 args = dict(eff.args)
                 if args.get("allow_undeclared") is not None and \
                         args["allow_undeclared"].consts() != [False]:
@@ -87,4 +95,4 @@ class TargetIndex:
                 if callee not in seen:
                     seen.add(callee)
                     queue.append(callee)
-        return sorted(sites), sorted(open_sites)
+        return sorted(sites), sorted(open_sites), sorted(classes, key=repr)

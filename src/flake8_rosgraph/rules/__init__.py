@@ -1,4 +1,4 @@
-"""The graph rules ROS001–ROS010, the rclpy-misuse rules ROS101–ROS106 and ROS201–ROS204: one module per rule, run together over one extracted graph.
+"""The graph rules ROS001–ROS010, the rclpy-misuse rules ROS101–ROS107 and the launch rules ROS201–ROS205: one module per rule, run together over one extracted graph.
 
 ``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
 SARIF writer, the generated ``docs/rules.md``) reads, in code order.

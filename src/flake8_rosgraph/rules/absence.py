@@ -30,6 +30,10 @@ since a typo usually hits a name that other nodes still use: see
   only subscribed, ``/local_costmap/clear_...`` only called): another
   program's interface.
 
+A name a launch file changed (namespace, remap) is an interface toward the
+nodes that launch file does not start: it is compared only with the nodes
+of its own launch system.
+
 What is left is the odd one out: a node that feeds (or is fed by) the
 workspace through some publishers and not through this one — the thesis's
 ``topic5`` and ``topic8``.
@@ -52,6 +56,7 @@ from collections import Counter
 from typing import ClassVar, Iterator
 
 from ..graph.model import PEER_KIND, RosGraph
+from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
 from .near_miss import NearMissFinder
@@ -74,19 +79,23 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        dangling = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)]
+        peer_kind = PEER_KIND[self.kind]
+        scopes = LaunchScopes(graph.systems)
+        # a node no launch file starts still meets a launched executable run as written
+        dangling = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
+                    and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not dangling:
             return
         dangling = self._whole_sites_only(dangling, index)
-        peer_kind = PEER_KIND[self.kind]
         near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
         for endpoint in dangling:
             interface = (id(endpoint.node) not in wired
                          or index.same_role_nodes(endpoint) > 1
-                         or namespace_of(endpoint.entity.name) in one_way)
-            yield from self._report(endpoint, near_misses, interface)
+                         or namespace_of(endpoint.entity.name) in one_way
+                         or scopes.renamed(endpoint.node, endpoint.entity))
+            yield from self._report(endpoint, near_misses, interface, scopes)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
         return (endpoint.entity.invalid is None  # rclpy raises before it exists; ROS006 says so
@@ -105,10 +114,14 @@ class AbsenceRule(Rule):
         dangling_at = Counter(ep.entity.location for ep in dangling)
         return [ep for ep in dangling if dangling_at[ep.entity.location] == alternatives[ep.entity.location]]
 
-    def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool) -> Iterator[Finding]:
+    def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
+                scopes: LaunchScopes) -> Iterator[Finding]:
         entity = endpoint.entity
         head = f"{NAME_NOUN[self.kind]} '{entity.name}' has no {self.missing}"
         near = near_misses.find(endpoint)
+        if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
+                scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
+            near = None  # a name launch changed, against a node that launch file does not start
         if near is not None:
             peer = near.peer.entity
             message = (f"{head}; did you mean '{near.name}' "

@@ -6,15 +6,17 @@ from typing import Iterator
 from ..graph import names
 from ..graph.model import RosGraph
 from ..launch.model import Instance, Remap, System
-from .exempt import ExemptNames
 from .base import Finding, Rule, RuleConfig
 
 #: Names rcl uses on every node without the code asking for them; remapping them is legitimate.
 _IMPLICIT = frozenset({"/rosout", "/parameter_events"})
-
-
-#: The per-node built-in names (``/<node>/get_parameters`` …) of the exempt list.
-_PER_NODE = ExemptNames.build()
+#: The node's own services and topics under its private prefix (parameter services, type
+#: description, lifecycle), created without the code naming them.
+_IMPLICIT_PRIVATE = frozenset({
+    "describe_parameters", "get_parameter_types", "get_parameters", "list_parameters",
+    "set_parameters", "set_parameters_atomically", "get_type_description",
+    "change_state", "get_state", "get_available_states", "get_available_transitions",
+    "get_transition_graph", "transition_event"})
 
 
 def _judgeable(instance: Instance, remap: Remap) -> bool:
@@ -28,9 +30,9 @@ def _judgeable(instance: Instance, remap: Remap) -> bool:
     if expanded is None:
         return False  # ROS203 reports an invalid source
     private = names.fqn(node.name, node.namespace) + "/"
-    # A private name (``~/x``) is judged like any other, except the services and topics every
-    # node has by itself (parameter, logger, lifecycle services), which the code never creates.
-    return expanded not in _IMPLICIT and not (expanded.startswith(private) and expanded in _PER_NODE)
+    if expanded.startswith(private) and expanded[len(private):] in _IMPLICIT_PRIVATE:
+        return False
+    return expanded not in _IMPLICIT
 
 
 class IneffectiveRemap(Rule):

@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Iterator
 
 from ..graph import names
-from ..graph.model import RosGraph
+from ..graph.model import Location, RosGraph
 from ..launch.model import Instance
 from .base import Finding, Rule, RuleConfig
 
@@ -30,6 +30,9 @@ class UnknownParameter(Rule):
     allows undeclared parameters (`allow_undeclared_parameters=True`) or
     declares one whose name the analysis cannot determine is skipped.
     `SetParameter` values (meant for every node of a scope) are not judged.
+    rcl hands a process's parameters to every node it creates, so a value
+    is reported only when no node of that process that receives it declares
+    it (a multi-node executable is judged as one process).
 
     ## Example
     ```yaml
@@ -57,23 +60,42 @@ class UnknownParameter(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         for system in graph.systems:
+            processes: dict[int, list[Instance]] = {}
             for instance in system.instances:
-                yield from self._instance(instance)
+                processes.setdefault(id(instance.launched), []).append(instance)
+            for process in processes.values():
+                yield from self._process(process)
 
-    def _instance(self, instance: Instance) -> Iterator[Finding]:
-        if instance.code.location in instance.launched.target.open_parameter_sites:
-            return
-        declared = [e.name for e in instance.code.entities if e.kind == "parameters"]
-        if any(name is None for name in declared):
-            return
-        known = set(declared)
-        node = instance.node
-        for name, _value, location, origin in instance.settings:
-            if origin == "scope" or name in known or name in BUILTIN_PARAMETERS \
-                    or name.startswith(BUILTIN_PREFIXES):
+    def _process(self, process: list[Instance]) -> Iterator[Finding]:
+        """One launched executable: rcl hands its parameters to every node it creates, and
+        a value is ignored only when no node that receives it declares it."""
+        declared: dict[int, set[str]] = {}
+        for instance in process:
+            names_ = [e.name for e in instance.code.entities if e.kind == "parameters"]
+            if instance.code.location in instance.launched.target.open_parameter_sites \
+                    or any(name is None for name in names_):
+                return
+            declared[id(instance)] = set(names_)
+        receivers: dict[tuple[str, Location], list[Instance]] = {}
+        for instance in process:
+            for name, _value, location, origin in instance.settings:
+                if origin == "scope" or name in BUILTIN_PARAMETERS \
+                        or name.startswith(BUILTIN_PREFIXES):
+                    continue
+                receivers.setdefault((name, location), []).append(instance)
+        for (name, location), nodes in sorted(receivers.items(), key=lambda kv: (kv[0][1], kv[0][0])):
+            if any(name in declared[id(i)] for i in nodes):
                 continue
-            message = f"parameter '{name}' is set for node '{node.fqn}', which never declares it"
-            close = sorted(k for k in known if k and names.edit_distance(k, name, 2) <= 2)
-            if close:
-                message += f"; did you mean '{close[0]}'?"
-            yield Finding(location, self.code, message, ((node.location, f"node '{node.fqn}'"),))
+            yield self._finding(name, location, nodes, set().union(*(declared[id(i)] for i in nodes)))
+
+    def _finding(self, name: str, location: Location, nodes: list[Instance],
+                 known: set[str]) -> Finding:
+        fqns = sorted({i.node.fqn or "?" for i in nodes})
+        target = f"node '{fqns[0]}', which never declares it" if len(fqns) == 1 else \
+            "nodes " + ", ".join(f"'{f}'" for f in fqns) + ", none of which declares it"
+        message = f"parameter '{name}' is set for {target}"
+        close = sorted(k for k in known if k and names.edit_distance(k, name, 2) <= 2)
+        if close:
+            message += f"; did you mean '{close[0]}'?"
+        related = tuple(sorted({(i.node.location, f"node '{i.node.fqn}'") for i in nodes}))
+        return Finding(location, self.code, message, related)

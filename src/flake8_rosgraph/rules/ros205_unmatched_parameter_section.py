@@ -1,79 +1,112 @@
 """ROS205 unmatched-parameter-section."""
 from __future__ import annotations
 
+import posixpath
 from dataclasses import dataclass, field
 from typing import Iterator
 
 from ..graph import names
 from ..graph.model import Location, RosGraph
 from ..launch.model import LaunchedNode, System
+from ..launch.param_files import Section
 from .base import Finding, Rule, RuleConfig
+
+#: Unresolved parts of a launched node that may change the name rcl gives its nodes.
+_NAME_CHANGERS = ("name", "namespace", "ros_arguments")
 
 
 @dataclass
 class _FileUse:
-    """Who receives one parameter file, over every launch system that passes it."""
+    """Every node started with one parameter file, over all launch systems."""
 
-    sections: list = field(default_factory=list)
+    sections: list[Section] = field(default_factory=list)
     fqns: set[str] = field(default_factory=set)
-    passed_at: set[Location] = field(default_factory=set)
-    #: Some receiving node's name or namespace is not known: any section might match it.
-    open: bool = False
+    references: set[Location] = field(default_factory=set)
+    #: Some node started with the file has a name or namespace the analysis does not know.
+    unknown: bool = False
 
 
-def _launched_fqns(system: System, launched: LaunchedNode) -> set[str] | None:
-    """The fully qualified names the nodes of one launch action get; ``None`` when one is unknown."""
-    if launched.is_unresolved("ros_arguments"):
-        return None  # --ros-args given on the command line may rename the node
-    instances = [i for i in system.instances if i.launched is launched]
-    if instances:
-        fqns = {i.node.fqn for i in instances}
-        return None if None in fqns else fqns  # type: ignore[return-value]
-    if launched.target.status == "found" or launched.name is None \
-            or launched.is_unresolved("name") or launched.is_unresolved("namespace"):
-        return None  # code that creates no node we know of, or a name the launch file leaves to it
-    namespace = launched.namespace or "/"
-    return {namespace.rstrip("/") + "/" + launched.name.lstrip("/")}
+def _fqns(system: System, launched: LaunchedNode) -> list[str] | None:
+    """The fully qualified names of the nodes ``launched`` starts, or ``None`` if one is unknown."""
+    if any(launched.is_unresolved(what) for what in _NAME_CHANGERS):
+        return None
+    if launched.target.status == "found":
+        found = [i.node.fqn for i in system.instances if i.launched is launched]
+        return None if not found or None in found else [f for f in found if f is not None]
+    if launched.name is not None and launched.namespace is not None:
+        # `__node:=` and `__ns:=` rename every node of an executable the analysis cannot read.
+        return [names.fqn(launched.name, names.normalize_namespace(launched.namespace))]
+    return None
+
+
+def _uses(systems: list[System]) -> dict[str, _FileUse]:
+    uses: dict[str, _FileUse] = {}
+    unresolved: list[str] = []
+    for system in systems:
+        # An include or OpaqueFunction not followed, or a parameter file not resolved, may hand
+        # a file this system passes to nodes the analysis does not see.
+        incomplete = bool(system.problems)
+        for launched in system.nodes:
+            fqns = None if incomplete else _fqns(system, launched)
+            for ref in launched.param_files:
+                if ref.path is None:
+                    unresolved.append(ref.written)
+                    continue
+                use = uses.setdefault(ref.path, _FileUse())
+                use.sections = system.parameter_files.get(ref.path, use.sections)
+                use.references.add(ref.location)
+                if fqns is None:
+                    use.unknown = True
+                else:
+                    use.fqns.update(fqns)
+    for path, use in uses.items():
+        # a reference the analysis could not resolve elsewhere may well be this file, if it names it
+        if any(posixpath.basename(path) in written for written in unresolved):
+            use.unknown = True
+    return uses
 
 
 class UnmatchedParameterSection(Rule):
     """## What it does
-    Checks that every node section of a parameter YAML file (`talker:`,
-    `/robot1/talker:`, `/**:`, `/*/talker:`, nested namespace keys) matches
-    at least one node started with that file, after the launch file's names
-    and namespaces are applied, as rcl matches them.
+    Checks that every section of a parameter YAML file (a node key above
+    `ros__parameters`: `talker`, `/robot/talker`, nested `robot: talker:`,
+    or with the wildcards `*` and `/**` as rcl matches them) matches at
+    least one node that the workspace's launch files start with that file.
 
     ## Why is this bad?
-    rcl applies a section only to the nodes whose fully qualified name it
-    matches. A section for `talker` when the node runs as `/robot1/talker`
-    (a namespace added by the launch file), or a misspelt node name, is
-    silently ignored: every value in it is lost and the node runs with its
-    defaults, with no error or warning at run time.
+    rcl hands a node only the sections whose key matches its fully
+    qualified name. A section for a node name that was changed, or
+    misspelt, or written without the namespace the launch file pushes,
+    matches nothing: every value in it is silently ignored and the node
+    runs with its defaults.
 
     ## Known problems
-    The file is judged over every launch system that passes it; when any node
-    receiving it has a name or namespace the analysis cannot determine (an
-    executable whose code is not in the workspace and whose name the launch
-    file does not set, a launch argument without a value), the file is not
-    judged. The finding is located in the YAML file, so `check`, SARIF and
-    the pre-commit hook show it; flake8 itself only reads Python files.
+    A file is judged over every launch file that passes it, so a shared
+    file (one section per node of a stack) is fine as long as some launch
+    file starts each node. It stays quiet when a node started with the file
+    has a name or namespace the analysis cannot determine (from a launch
+    argument without a default, or a C++ executable whose name the launch
+    file does not set), and for files passed by a launch file that is not
+    followed completely (an include or `OpaqueFunction` it cannot follow,
+    a parameter file it cannot resolve such as `RewrittenYaml`): unseen
+    nodes may receive the file there. Only parameter
+    files that some launch file passes are judged. The finding is located
+    in the YAML file, so flake8 (which sees only `.py` files) does not show
+    it; use `flake8-rosgraph check` or SARIF.
 
     ## Example
-    ```python
-    Node(package='demo', executable='talker', namespace='robot1',
-         parameters=['config/talker.yaml'])
-    ```
     ```yaml
-    talker:
+    # config/camera.yaml, passed to Node(..., name='front_camera', namespace='robot')
+    camera:
       ros__parameters:
-        rate: 5.0
+        exposure: 0.02
     ```
 
     ## Use instead
     ```yaml
-    /robot1/talker:   # or /**/talker, or /** for every node started with the file
+    /robot/front_camera:
       ros__parameters:
-        rate: 5.0
+        exposure: 0.02
     ```
 
     ## Options
@@ -84,41 +117,27 @@ class UnmatchedParameterSection(Rule):
     name = "unmatched-parameter-section"
     level = "warning"
     precision = "high"  # SARIF/code-scanning precision: how often a finding is a real problem
-    summary = ("a parameter YAML section (node key) that no node started with that file matches: "
-               "all its values are ignored")
+    summary = "a parameter YAML section matches no node started with that file: its values are ignored"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
-        uses: dict[str, _FileUse] = {}
-        for system in graph.systems:
-            for launched in system.nodes:
-                fqns = _launched_fqns(system, launched)
-                for ref in launched.param_files:
-                    if ref.path is None:
-                        continue
-                    use = uses.setdefault(ref.path, _FileUse())
-                    use.sections = system.param_sections.get(ref.path, use.sections)
-                    use.passed_at.add(ref.location)
-                    if fqns is None:
-                        use.open = True
-                    else:
-                        use.fqns |= fqns
-        for path in sorted(uses):
-            use = uses[path]
-            if use.open or not use.fqns:
+        for _path, use in sorted(_uses(graph.systems).items()):
+            if use.unknown or not use.fqns:
                 continue
             for section in use.sections:
-                if not any(section.matches(fqn) for fqn in use.fqns):
-                    yield self._finding(section, use)
+                if section.location is None or not section.settings \
+                        or any(section.matches(fqn) for fqn in use.fqns):
+                    continue
+                yield self._finding(section, use)
 
-    def _finding(self, section, use: _FileUse) -> Finding:
+    def _finding(self, section: Section, use: _FileUse) -> Finding:
         started = sorted(use.fqns)
-        message = (f"parameter section '{section.pattern}' matches no node started with "
-                   f"{section.location.path} ({', '.join(started[:3])}{', ...' if len(started) > 3 else ''}); "
-                   f"its {len(section.settings)} value(s) are ignored")
-        close = [fqn for fqn in started if names.edit_distance(fqn, section.pattern, 3) <= 3
-                 or fqn.rsplit("/", 1)[-1] == section.pattern.rsplit("/", 1)[-1]]
+        shown = ", ".join(started[:4]) + (", …" if len(started) > 4 else "")
+        count = len(section.settings)
+        message = (f"parameter section '{section.pattern}' matches no node started with this file "
+                   f"({shown}): its {count} value{'s' if count != 1 else ''} "
+                   f"{'are' if count != 1 else 'is'} ignored")
+        close = sorted(f for f in started if names.edit_distance(f, section.pattern, 3) <= 3)
         if close:
             message += f"; did you mean '{close[0]}'?"
-        related = tuple((location, "the launch file passes the parameter file here")
-                        for location in sorted(use.passed_at)[:3])
+        related = tuple((ref, "parameter file passed here") for ref in sorted(use.references))
         return Finding(section.location, self.code, message, related)
