@@ -136,7 +136,9 @@ class UnmatchedParameterSection(Rule):
         message = (f"parameter section '{section.pattern}' matches no node started with this file "
                    f"({shown}): its {count} value{'s' if count != 1 else ''} "
                    f"{'are' if count != 1 else 'is'} ignored")
-        close = sorted(f for f in started if names.edit_distance(f, section.pattern, 3) <= 3)
+        # a misspelt node key, or the right node name outside the namespace the node runs in
+        close = sorted(f for f in started if names.edit_distance(f, section.pattern, 3) <= 3) or \
+            sorted(f for f in started if f.rsplit("/", 1)[-1] == section.pattern.rsplit("/", 1)[-1])
         if close:
             message += f"; did you mean '{close[0]}'?"
         related = tuple((ref, "parameter file passed here") for ref in sorted(use.references))
