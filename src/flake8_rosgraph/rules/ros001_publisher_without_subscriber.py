@@ -24,9 +24,10 @@ class PublisherWithoutSubscriber(AbsenceRule):
     idle.
 
     ## Known problems
-    The rule only sees the Python code of the workspace: topics consumed by C++
-    nodes, robots, rviz, `ros2 topic echo` or bag recordings look
-    unsubscribed. To stay useful on real repositories it reports only the
+    The rule sees the workspace's Python code and, as partner ends, the rclcpp
+    calls of its C++ packages whose names are literal or simple constants
+    (read with tree-sitter); topics consumed by C++ code it cannot resolve,
+    robots, rviz, `ros2 topic echo` or bag recordings look unsubscribed. To stay useful on real repositories it reports only the
     *odd one out*: a topic of a node whose other publishers do feed the
     workspace. It stays quiet (unless a near name is subscribed) when
     none of the node's publishers has a subscriber here (a driver's or

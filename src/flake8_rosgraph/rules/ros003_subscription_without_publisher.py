@@ -23,8 +23,10 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     publisher that was renamed. ROS 2 raises no error for it.
 
     ## Known problems
-    Topics published by C++ nodes, drivers, simulators, rviz, the command
-    line or bag playback look unpublished. The rule reports only the *odd one
+    Topics published by C++ nodes whose names the analysis cannot resolve
+    (the workspace's rclcpp calls with literal names are partner ends),
+    drivers outside the workspace, simulators, rviz, the command line or bag
+    playback look unpublished. The rule reports only the *odd one
     out*: a topic of a node whose other subscriptions are fed by the
     workspace. It stays quiet (unless a near name is published) when none
     of the node's subscriptions has a publisher here (a tool fed from

@@ -22,7 +22,9 @@ class ServiceClientWithoutServer(AbsenceRule):
     service name or a server that lives in another namespace.
 
     ## Known problems
-    Services served by C++ nodes (Nav2, ros2_control, drivers) look unserved.
+    Services served by C++ nodes outside the workspace, or inside it under
+    names the analysis cannot resolve (Nav2, ros2_control, drivers), look
+    unserved.
     The rule reports only a client of a node whose other clients reach
     servers of the workspace; it stays quiet (unless a near name
     is served) when none of the node's clients is served here, when several

@@ -21,8 +21,10 @@ class ActionClientWithoutServer(AbsenceRule):
     is usually a misspelt action name or a server in another namespace.
 
     ## Known problems
-    Actions served by C++ nodes (Nav2's `navigate_to_pose`, MoveIt's
-    `move_action`, controllers' `follow_joint_trajectory`) look unserved;
+    Actions served by C++ nodes outside the workspace, or created through
+    templates whose names the analysis cannot resolve (Nav2's
+    `navigate_to_pose`, MoveIt's `move_action`, controllers'
+    `follow_joint_trajectory`), look unserved;
     declare them as external names. The rule reports only an action client of
     a node whose other action clients reach servers of the workspace; it
     stays quiet (unless a near name is served) when none of them does,
