@@ -49,7 +49,9 @@ from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.graph.json_out import to_json
 graph = build_graph(Path(sys.argv[1]))
 sys.stdout.write(to_json(graph))
-sys.stderr.write("peak-kib=%d\\n" % resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+# VmHWM is this process's own peak: ru_maxrss would also count the parent's peak before exec
+peak = [line for line in open("/proc/self/status") if line.startswith("VmHWM:")]
+sys.stderr.write("peak-kib=%d\\n" % (int(peak[0].split()[1]) if peak else resource.getrusage(resource.RUSAGE_SELF).ru_maxrss))
 """
 
 

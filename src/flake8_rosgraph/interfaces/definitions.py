@@ -138,7 +138,7 @@ def parse_message(text: str, key: str) -> MessageDef:
             field_type = parse_type(type_text, package)
         except InterfaceError as exc:
             raise InterfaceError(f"{key} line {number}: {exc}") from None
-        name_part = re.split(r"[\s=#]", rest, 1)[0]
+        name_part = re.split(r"[\s=#]", rest, maxsplit=1)[0]
         if not _NAME.match(name_part):
             raise InterfaceError(f"{key} line {number}: bad field name {name_part!r}")
         if rest[len(name_part):].lstrip().startswith("="):
