@@ -67,18 +67,28 @@ def resolve_inside(path: Path, root: Path | None) -> Path:
     return resolved
 
 
-def read_bytes(path: Path, root: Path | None, limit: int = MAX_DATA_BYTES) -> bytes:
-    """The content of the regular file ``path`` inside ``root`` (see module docstring)."""
+def _open_regular(path: Path, root: Path | None) -> tuple[int, os.stat_result]:
+    """An open descriptor of the regular file ``path`` inside ``root``, set to blocking reads."""
     resolved = resolve_inside(Path(path), root)
     fd = os.open(resolved, _FLAGS)
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
             raise UnsafeFile("not read: not a regular file (a pipe, device or folder)")
-        if info.st_size > limit:
-            raise UnsafeFile(f"not read: larger than the {_mib(limit)} limit")
         if _NONBLOCK:  # a regular file: plain blocking reads from here on
             os.set_blocking(fd, True)
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd, info
+
+
+def read_bytes(path: Path, root: Path | None, limit: int = MAX_DATA_BYTES) -> bytes:
+    """The content of the regular file ``path`` inside ``root`` (see module docstring)."""
+    fd, info = _open_regular(path, root)
+    try:
+        if info.st_size > limit:
+            raise UnsafeFile(f"not read: larger than the {_mib(limit)} limit")
         chunks: list[bytes] = []
         size = 0
         while size <= limit:
@@ -90,6 +100,15 @@ def read_bytes(path: Path, root: Path | None, limit: int = MAX_DATA_BYTES) -> by
         if size > limit:  # it grew after fstat()
             raise UnsafeFile(f"not read: larger than the {_mib(limit)} limit")
         return b"".join(chunks)
+    finally:
+        os.close(fd)
+
+
+def read_head(path: Path, root: Path | None, size: int) -> bytes:
+    """The first ``size`` bytes (or fewer) of the regular file ``path`` inside ``root``, whatever its length."""
+    fd, _ = _open_regular(path, root)
+    try:
+        return os.read(fd, size)
     finally:
         os.close(fd)
 

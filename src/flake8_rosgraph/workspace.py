@@ -12,7 +12,6 @@ import ast
 import io
 import os
 import re
-import stat
 import sys
 import tokenize
 from dataclasses import dataclass
@@ -21,7 +20,8 @@ from pathlib import Path
 from .absint.program import Module
 from .graph.model import Diagnostic
 from .options import Buffers
-from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
+from .cmake import cmake_commands
+from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes, read_head
 
 #: On Python 3.10, a line with more call/attribute/subscript links than this is not parsed
 #: (its parser may segfault on such chains instead of raising).
@@ -43,11 +43,10 @@ DIST_MARKERS = ("package.xml", "setup.py", "setup.cfg", "pyproject.toml")
 #: Bytes read from an extension-less file to look for a Python shebang.
 SHEBANG_BYTES = 256
 _SHEBANG = re.compile(rb"^#![^\n]*\bpython[0-9.]*\b")
-#: Scripts named by a build file: ``scripts=[…]`` in setup.py, ``scripts =`` in setup.cfg,
-#: ``install(PROGRAMS …)`` in CMakeLists.txt (the arguments up to the closing parenthesis).
+#: Scripts named by a build file: ``scripts=[…]`` in setup.py, ``scripts =`` in setup.cfg
+#: (``install(PROGRAMS …)`` in CMakeLists.txt is read with the linear :mod:`.cmake` scanner).
 _SETUP_SCRIPTS = re.compile(r"\bscripts\s*=\s*\[([^\]]*)\]")
 _CFG_SCRIPTS = re.compile(r"^scripts\s*=\s*((?:.*\n(?:[ \t]+.*\n?)*))", re.MULTILINE)
-_CMAKE_PROGRAMS = re.compile(r"install\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE)
 _PACKAGE_DIR = re.compile(r"package_dir\s*=\s*\{\s*['\"]{2}\s*:\s*['\"]([\w./-]+)['\"]")
 _CFG_PACKAGE_DIR = re.compile(r"^package_dir\s*=\s*\n?\s*=\s*([\w./-]+)", re.MULTILINE)
 #: Build files read for script names and package_dir are small; bigger ones are skipped.
@@ -78,44 +77,34 @@ def python_files(root: Path) -> list[Path]:
 
 
 def _small_text(path: Path, limit: int) -> str | None:
-    """The text of a regular file of at most ``limit`` bytes, else ``None`` (never blocks on
-    a FIFO, never raises)."""
+    """The text of a regular file of at most ``limit`` bytes, else ``None`` (the safe opener's rules)."""
     try:
-        info = os.stat(path)
-        if not stat.S_ISREG(info.st_mode) or info.st_size > limit:
-            return None
-        with path.open("rb") as handle:
-            return handle.read(limit).decode("utf-8", "replace")
+        return read_bytes(path, None, limit).decode("utf-8", "replace")
     except OSError:
         return None
 
 
 def _has_python_shebang(path: Path) -> bool:
     try:
-        info = os.stat(path)
-        if not stat.S_ISREG(info.st_mode):
-            return False
-        with path.open("rb") as handle:
-            return bool(_SHEBANG.match(handle.read(SHEBANG_BYTES)))
+        return bool(_SHEBANG.match(read_head(path, None, SHEBANG_BYTES)))
     except OSError:
         return False
 
 
 def _listed_scripts(folder: Path, filenames: list[str]) -> set[Path]:
     """Files the build files in ``folder`` install as executables."""
-    out: set[Path] = set()
     names = set(filenames)
-    for build, pattern in (("setup.py", _SETUP_SCRIPTS), ("setup.cfg", _CFG_SCRIPTS),
-                           ("CMakeLists.txt", _CMAKE_PROGRAMS)):
-        if build not in names:
-            continue
-        text = _small_text(folder / build, MAX_BUILD_FILE_BYTES)
-        for match in pattern.finditer(text or ""):
-            for word in re.split(r"[\s,]+", match.group(1)):
-                word = word.strip("'\"")
-                if word and not word.startswith(("$", "DESTINATION")) and ".." not in word:
-                    out.add(folder / word)
-    return out
+    words: list[str] = []
+    for build, pattern in (("setup.py", _SETUP_SCRIPTS), ("setup.cfg", _CFG_SCRIPTS)):
+        if build in names:
+            for match in pattern.finditer(_small_text(folder / build, MAX_BUILD_FILE_BYTES) or ""):
+                words += re.split(r"[\s,]+", match.group(1))
+    if "CMakeLists.txt" in names:
+        for command, args in cmake_commands(_small_text(folder / "CMakeLists.txt", MAX_BUILD_FILE_BYTES) or ""):
+            if command == "install" and args and args[0].upper() == "PROGRAMS":
+                words += args[1:args.index("DESTINATION")] if "DESTINATION" in args else args[1:]
+    return {folder / word for word in (w.strip("'\"") for w in words)
+            if word and not word.startswith("$") and ".." not in word}
 
 
 def source_roots(folder: Path) -> set[Path]:

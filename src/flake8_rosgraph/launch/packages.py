@@ -19,13 +19,13 @@ from __future__ import annotations
 import ast
 import configparser
 import os
-import re
 import xml.parsers.expat
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
+from ..cmake import cmake_commands
 from ..safe_io import describe, is_regular_file, is_within, read_bytes, read_text
 from ..workspace import SKIP_DIRS
 from .xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
@@ -290,110 +290,6 @@ def _setup_call_scripts(tree: ast.Module) -> list[Executable] | None:
 
 
 # -- CMakeLists.txt ---------------------------------------------------------------------------
-_BRACKET_OPEN = re.compile(r"\[(=*)\[")
-
-
-def _bracket_end(text: str, pos: int) -> tuple[int, str] | None:
-    """For a bracket argument/comment opening at ``pos`` (``[==[``): its end and its content."""
-    match = _BRACKET_OPEN.match(text, pos)
-    if match is None:
-        return None
-    close = "]" + match.group(1) + "]"
-    end = text.find(close, match.end())
-    end = len(text) if end < 0 else end
-    return end + len(close), text[match.end():end]
-
-
-def _skip_comment(text: str, pos: int) -> int:
-    """The position after the comment starting with ``#`` at ``pos``."""
-    bracket = _bracket_end(text, pos + 1)
-    if bracket is not None:
-        return bracket[0]
-    end = text.find("\n", pos)
-    return len(text) if end < 0 else end
-
-
-def _quoted_end(text: str, pos: int) -> int:
-    """The position after the quoted argument opening at ``pos``."""
-    i = pos + 1
-    while i < len(text):
-        char = text[i]
-        if char == "\\":
-            i += 2
-        elif char == '"':
-            return i + 1
-        else:
-            i += 1
-    return len(text)
-
-
-def _arguments(text: str, pos: int) -> tuple[list[str], int]:
-    """The arguments of a command whose ``(`` is at ``pos``, and the position after its ``)``."""
-    args: list[str] = []
-    depth, i, start = 1, pos + 1, -1
-    while i < len(text) and depth:
-        char = text[i]
-        if start < 0 and char == '"':
-            end = _quoted_end(text, i)
-            args.append(text[i + 1:end - 1])
-            i = end
-            continue
-        if start < 0 and char == "[" and _bracket_end(text, i) is not None:
-            end, content = _bracket_end(text, i)  # type: ignore[misc]
-            args.append(content)
-            i = end
-            continue
-        if char == "#" and start < 0:
-            i = _skip_comment(text, i)
-            continue
-        if char.isspace() or char in "()":
-            if start >= 0:
-                args.append(text[start:i])
-                start = -1
-            depth += char == "("
-            depth -= char == ")"
-        elif start < 0:
-            start = i
-        i += 1
-    if start >= 0:
-        args.append(text[start:i])
-    return args, i
-
-
-_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-
-
-def cmake_commands(text: str) -> list[tuple[str, list[str]]]:
-    """``(lower-case command name, arguments)`` of each command invocation, in one linear pass.
-
-    A hand-written scanner rather than regular expressions over the whole file:
-    a pattern spanning arguments backtracks on inputs like ``install(PROGRAMS``
-    followed by thousands of spaces.
-    """
-    commands: list[tuple[str, list[str]]] = []
-    i = 0
-    while i < len(text):
-        char = text[i]
-        if char == "#":
-            i = _skip_comment(text, i)
-        elif char == '"':
-            i = _quoted_end(text, i)
-        elif char == "_" or char.isalpha():
-            match = _IDENTIFIER.match(text, i)
-            end = match.end() if match else i + 1
-            j = end
-            while j < len(text) and text[j] in " \t":
-                j += 1
-            if j < len(text) and text[j] == "(":
-                name = text[i:end].lower()
-                args, i = _arguments(text, j)
-                commands.append((name, args))
-            else:
-                i = end
-        else:
-            i += 1
-    return commands
-
 
 def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
                        notes: list[Diagnostic]) -> bool:
