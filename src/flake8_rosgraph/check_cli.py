@@ -80,12 +80,8 @@ def _codes(value: str | None) -> list[str]:
     return [c.strip().upper() for c in (value or "").split(",") if c.strip()]
 
 
-def _noqa_lines(path: Path) -> dict[int, str]:
+def _noqa_lines(source: str) -> dict[int, str]:
     """Line → the text flake8 searches for ``# noqa`` (a multi-line string counts as one line)."""
-    try:
-        source = read_text(path, None, MAX_SOURCE_BYTES)
-    except (OSError, UnicodeDecodeError):
-        return {}
     lines = source.splitlines(keepends=True)
     mapping = {number: line for number, line in enumerate(lines, 1)}
     try:
@@ -177,15 +173,11 @@ def _settings(args: argparse.Namespace, config: FileConfig) -> Settings:
     return Settings.resolve(merged, os.environ)
 
 
-def _file_noqa(path: Path) -> bool:
+def _skips_file(source: str) -> bool:
     """Whether flake8 skips the whole file (a line that is only ``# flake8: noqa``)."""
     from flake8.defaults import NOQA_FILE
 
-    try:
-        lines = read_text(path, None, MAX_SOURCE_BYTES).splitlines()
-    except (OSError, UnicodeDecodeError):
-        return False
-    return any(NOQA_FILE.match(line) for line in lines)
+    return any(NOQA_FILE.match(line) for line in source.splitlines())
 
 
 class _Noqa:
@@ -196,7 +188,11 @@ class _Noqa:
 
     def hides(self, path: Path, line: int, code: str) -> bool:
         if path not in self._lines:
-            self._lines[path] = None if _file_noqa(path) else _noqa_lines(path)
+            try:
+                source = read_text(path, None, MAX_SOURCE_BYTES)
+            except (OSError, UnicodeDecodeError):
+                source = ""
+            self._lines[path] = None if _skips_file(source) else _noqa_lines(source)
         lines = self._lines[path]
         return lines is None or _noqa_suppresses(lines.get(line), code)
 

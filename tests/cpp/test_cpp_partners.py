@@ -20,7 +20,6 @@ from flake8_rosgraph.findings import Finding, RuleConfig
 from flake8_rosgraph.graph.json_out import to_json_obj
 from flake8_rosgraph.graph.model import Location
 from flake8_rosgraph.options import Settings
-from flake8_rosgraph.rules import run_rules
 
 MIXED = Path(__file__).resolve().parents[1] / "eval" / "cpp_mixed_workspace"
 MONITOR = "src/base_monitor/base_monitor/monitor.py"

@@ -13,7 +13,6 @@ diagnostic giving the module and the function that consumed it.
 """
 from __future__ import annotations
 
-import json
 import sys
 import time
 from pathlib import Path

@@ -71,7 +71,7 @@ def _sections(node: YNode, tokens: list[str], path: str, out: list[Section], lin
             _flatten(value, "", path, settings)
             out.append(Section("/" + pattern, tuple(settings), Location(path, line, 1)))
         else:
-            _sections(value, tokens + [key], path, out, node.key_lines.get(key, value.line))
+            _sections(value, tokens + [key], path, out, key_line)
 
 
 def read_param_file(root: Path, path: str) -> list[Section]:
