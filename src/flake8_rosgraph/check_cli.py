@@ -35,7 +35,7 @@ from .findings import Finding, display_path, localised_message
 from .fingerprints import Ranks, SourceLines, finding_fingerprint, without_line_numbers
 from .graph.model import Diagnostic
 from .options import INTERNAL_ERROR_CODE, CodeFilter, Settings, root_problem
-from .root import discover_root, find_vcs_root
+from .root import RootRefused, discover_root, find_vcs_root
 from .partial_runs import shown_findings
 from .safe_io import MAX_SOURCE_BYTES, read_text
 
@@ -207,7 +207,10 @@ def _collect(settings: Settings, paths: list[Path], wanted: _Selection, config: 
     diagnostics: set[tuple[Path, Diagnostic]] = set()
     targets_by_root: dict[Path, list[Path]] = {}
     for target in (Path(os.path.abspath(p)) for p in paths):
-        root = Path(os.path.abspath(settings.root)) if settings.root else discover_root(target)
+        try:
+            root = Path(os.path.abspath(settings.root)) if settings.root else discover_root(target)
+        except RootRefused as refused:
+            raise UserError(str(refused)) from None
         targets_by_root.setdefault(root, []).append(target)
     for root, targets in sorted(targets_by_root.items()):
         report = workspace_report(root, settings)

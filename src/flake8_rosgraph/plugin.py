@@ -41,7 +41,7 @@ from .cache import WorkspaceReport, start_run, workspace_report
 from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
                       root_problem)
-from .root import discover_root, find_vcs_root
+from .root import RootRefused, discover_root, find_vcs_root
 from .findings import Finding, localised_message
 from .partial_runs import CONNECTION_CODES, CheckedFiles, shown_findings
 
@@ -60,7 +60,8 @@ class _Run:
     error: str | None = None
     #: Whether flake8 could report any ROS code at all (``--select E,W``: no analysis).
     selected: bool = True
-    roots: dict[Path, Path] = field(default_factory=dict, compare=False)
+    #: Folder of a checked file → its workspace root, or why no root was taken there.
+    roots: dict[Path, Path | RootRefused] = field(default_factory=dict, compare=False)
     #: flake8 reads the checked file from standard input (``flake8 -``): an editor's unsaved buffer.
     stdin: bool = False
     #: That buffer, once the checker has seen it (absolute path → bytes); the report stage reuses it.
@@ -99,12 +100,19 @@ def _root_for(run: _Run, path: Path) -> Path:
     if run.settings.root is not None:
         return Path(os.path.abspath(run.settings.root))
     directory = path.parent
-    if directory in run.roots:
-        return run.roots[directory]
-    root = discover_root(path)
-    if root != path:  # a lone file that is its own root says nothing about its neighbours
+    if directory not in run.roots:
+        try:
+            root = discover_root(path)
+        except RootRefused as refused:  # probed once per folder, not once per file
+            run.roots[directory] = refused
+            raise
+        if root == path:  # a lone file that is its own root says nothing about its neighbours
+            return root
         run.roots[directory] = root
-    return root
+    known = run.roots[directory]
+    if isinstance(known, RootRefused):
+        raise known
+    return known
 
 
 @functools.lru_cache(maxsize=8)
@@ -264,6 +272,8 @@ def checker_results(run: _Run, filename: str) -> list[tuple[int, int, str]]:
             raise RuntimeError(run.error)
         findings = findings_in_file(run, filename)
         errors = analysis_errors(run, filename)
+    except RootRefused as refused:  # a user's situation, not a crash: ROS000 once, with the way out
+        return [(1, 0, escape_text(_analysis_error_text(str(refused))))]
     except Exception as exc:
         if run.settings.debug:
             raise

@@ -20,12 +20,20 @@ found from the checked file itself, in this order:
    (walking them took minutes and gigabytes): a file directly in one of those
    is its own root, analysed alone.
 
-An explicit root (``--rosgraph-root`` / ``ROSGRAPH_ROOT``) skips all of this.
+A root found by that last fallback carries no mark of a ROS workspace. If no
+``package.xml`` lies anywhere in it either and it holds more than
+:data:`MAX_UNMARKED_PYTHON_FILES` Python files, it is refused
+(:class:`RootRefused`): a folder like that is a home, a download or a library
+tree, and analysing it took minutes and gigabytes to report nothing useful.
+
+An explicit root (``--rosgraph-root`` / ``--root`` / ``ROSGRAPH_ROOT``) skips all of this.
 """
 from __future__ import annotations
 
 import os
 from pathlib import Path
+
+from .safe_io import SKIP_DIRS
 
 #: Entries whose presence makes a directory a version-control root.
 VCS_MARKERS: tuple[str, ...] = (".git", ".hg", ".svn", ".jj")
@@ -33,6 +41,16 @@ VCS_MARKERS: tuple[str, ...] = (".git", ".hg", ".svn", ".jj")
 COLCON_BASES: tuple[str, ...] = ("build", "install", "log")
 #: The manifest that makes a directory a ROS package.
 PACKAGE_MANIFEST = "package.xml"
+#: A discovered root with no workspace marker and more Python files than this is refused.
+MAX_UNMARKED_PYTHON_FILES = 2_000
+#: Directory entries the size probe looks at before it calls an unmarked folder too large.
+MAX_UNMARKED_ENTRIES = 100_000
+#: How to name a root explicitly, in every front end's words.
+OVERRIDE_HINT = "--rosgraph-root DIR (flake8), --root DIR (check) or ROSGRAPH_ROOT=DIR"
+
+
+class RootRefused(Exception):
+    """A discovered root that is clearly not a ROS workspace; the message says how to override."""
 
 
 def _start_dir(path: Path) -> Path:
@@ -124,4 +142,32 @@ def discover_root(path: Path, cwd: Path | None = None) -> Path:
     absolute = Path(os.path.abspath(path))
     if chosen in protected and absolute != start:
         return absolute  # a lone file in / or $HOME: analysed alone, nothing walked
+    if package is None:
+        _refuse_if_large(chosen)
     return chosen
+
+
+def _refuse_if_large(folder: Path) -> None:
+    """Raise :class:`RootRefused` when ``folder`` holds no ``package.xml`` and is large.
+
+    The probe walks as the workspace walk does (no symlinks, build and hidden
+    folders skipped) and stops at the first ``package.xml`` or at the limits, so
+    it costs little either way.
+    """
+    python_files = entries = 0
+    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+        if PACKAGE_MANIFEST in filenames:
+            return
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        entries += len(dirnames) + len(filenames)
+        python_files += sum(name.endswith(".py") for name in filenames)
+        if python_files > MAX_UNMARKED_PYTHON_FILES:
+            size = f"{MAX_UNMARKED_PYTHON_FILES:,} Python files"
+        elif entries > MAX_UNMARKED_ENTRIES:
+            size = f"{MAX_UNMARKED_ENTRIES:,} files and folders"
+        else:
+            continue
+        raise RootRefused(
+            f"{folder}: not analysed: nothing marks it as a ROS workspace (no package.xml, "
+            f"version-control root or colcon layout) and it holds more than {size}; run from "
+            f"inside your workspace, or name the root with {OVERRIDE_HINT} to analyse it anyway")

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from flake8_rosgraph.root import discover_root
+from flake8_rosgraph.root import MAX_UNMARKED_PYTHON_FILES, RootRefused, discover_root
 
 from .harness import clean_env, flake8_executable, run
 from .metadata_workspace import CHAT, TALKER, TIGHT_MEMORY, write_workspace
@@ -98,6 +98,56 @@ def test_flake8_root_must_be_a_folder(ws: Path, tmp_path: Path, kind: str) -> No
         assert "flake8: error:" in done.stderr and ("--rosgraph-root" if env is None else "ROSGRAPH_ROOT") \
             in done.stderr, done.explain()
         assert "Traceback" not in done.stderr
+
+
+def _library_tree(folder: Path, files: int) -> None:
+    """A vendored library: many small modules in a few packages, none of them ROS."""
+    for index in range(files):
+        module = folder / "vendored" / f"part{index % 7}" / f"mod{index}.py"
+        module.parent.mkdir(parents=True, exist_ok=True)
+        module.write_text(f"VALUE = {index}\n")
+
+
+@pytest.fixture
+def downloads(tmp_path: Path) -> Path:
+    """A big folder that no marker makes a workspace, with one rclpy script in it."""
+    folder = tmp_path / "downloads"
+    _library_tree(folder, MAX_UNMARKED_PYTHON_FILES + 50)
+    (folder / "talker.py").write_text(TALKER)
+    return folder
+
+
+def test_big_unmarked_folder_is_refused_with_the_way_out(downloads: Path) -> None:
+    with pytest.raises(RootRefused):
+        discover_root(downloads / "talker.py", cwd=downloads)
+    done = tool("check", ".", cwd=downloads)
+    assert done.returncode == 2, done.explain()
+    assert str(downloads) in done.stderr and "--root DIR" in done.stderr and "ROSGRAPH_ROOT" in done.stderr
+    assert "Traceback" not in done.stderr and not (downloads / ".rosgraph-cache").exists()
+    explicit = tool("check", ".", f"--root={downloads}", "--format", "json", cwd=downloads)
+    assert explicit.returncode in (0, 1), explicit.explain()
+
+
+def test_big_unmarked_folder_costs_flake8_one_line_not_its_other_checks(downloads: Path) -> None:
+    (downloads / "unused.py").write_text("import os\n")
+    done = flake8("--select", "ROS,F", "talker.py", "unused.py", cwd=downloads)
+    assert done.returncode == 1, done.explain()
+    refusals = [line for line in done.stdout.splitlines() if "ROS000" in line]
+    assert len(refusals) == 1 and "--rosgraph-root DIR" in refusals[0], done.explain()
+    assert "F401" in done.stdout, "flake8's own checks must still run"
+    assert not (downloads / ".rosgraph-cache").exists()
+
+
+def test_unmarked_folder_below_the_limit_and_big_packages_are_analysed(tmp_path: Path) -> None:
+    scripts = tmp_path / "scripts"
+    _library_tree(scripts, MAX_UNMARKED_PYTHON_FILES - 50)
+    (scripts / "talker.py").write_text(TALKER)
+    assert discover_root(scripts / "talker.py", cwd=scripts) == scripts
+    package = tmp_path / "generated_pkg"
+    _library_tree(package / "generated_pkg", MAX_UNMARKED_PYTHON_FILES + 50)
+    (package / "package.xml").write_text("<package format='3'><name>generated_pkg</name></package>\n")
+    (package / "generated_pkg" / "talker.py").write_text(TALKER)
+    assert discover_root(package / "generated_pkg" / "talker.py", cwd=package) == package
 
 
 # -- user errors -------------------------------------------------------------------------------
