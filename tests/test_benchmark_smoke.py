@@ -26,27 +26,7 @@ sys.path.insert(0, str(BENCH_DIR))
 
 import growth  # noqa: E402  (benchmarks/ is a folder of scripts, not a package)
 import synth  # noqa: E402
-
-TALKER = '''\
-import rclpy
-from rclpy.node import Node
-from std_msgs.msg import String
-
-
-class Talker(Node):
-    def __init__(self):
-        super().__init__('talker')
-        self.pub = self.create_publisher(String, 'chatter', 10)
-        self.timer = self.create_timer(0.5, self.tick)
-
-    def tick(self):
-        self.pub.publish(String(data='hi'))
-
-
-def main():
-    rclpy.init()
-    rclpy.spin(Talker())
-'''
+from robustness.metadata_workspace import TALKER  # noqa: E402  (tests/ is on the path: no __init__)
 
 LISTENER = '''\
 import rclpy

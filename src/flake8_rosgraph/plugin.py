@@ -68,6 +68,9 @@ class _Run:
     buffers: dict[str, bytes] = field(default_factory=dict, compare=False)
     #: The files this run checks; ``None`` when flake8 does not tell (then every file counts as checked).
     checked: CheckedFiles | None = None
+    #: The folders named on flake8's command line (the current one for ``flake8`` alone and for
+    #: an editor's buffer): a root without a workspace marker never reaches beyond them.
+    given: tuple[Path, ...] = ()
 
 
 _RUN: _Run | None = None
@@ -102,7 +105,8 @@ def _root_for(run: _Run, path: Path) -> Path:
     directory = path.parent
     if directory not in run.roots:
         try:
-            root = discover_root(path)
+            holders = [folder for folder in run.given if folder == directory or folder in directory.parents]
+            root = discover_root(path, min(holders, key=lambda folder: len(folder.parts), default=None))
         except RootRefused as refused:  # probed once per folder, not once per file
             run.roots[directory] = refused
             raise
@@ -243,7 +247,7 @@ class RosGraphChecker:
             codes = CodeFilter.build(flake8_selectors(options), RULES)
             stdin = list(getattr(options, "filenames", None) or []) == ["-"]
             _RUN = _Run(settings, codes, selected=_ros_selected(options, codes, RULES), stdin=stdin,
-                        checked=CheckedFiles.from_flake8(options))
+                        checked=CheckedFiles.from_flake8(options), given=_given_folders(options))
         except Exception as exc:
             if settings.debug:
                 raise
@@ -263,6 +267,14 @@ class RosGraphChecker:
         _note_buffer(run, self.filename, self.lines)
         for line, column, text in checker_results(run, self.filename):
             yield line, column, text, type(self)
+
+
+def _given_folders(options: Any) -> tuple[Path, ...]:
+    """The folders among flake8's file arguments (``.`` when none; the current folder for stdin)."""
+    filenames = list(getattr(options, "filenames", None) or ["."])
+    if "-" in filenames:
+        return (Path.cwd(),)
+    return tuple(sorted({Path(os.path.abspath(name)) for name in filenames if os.path.isdir(name)}))
 
 
 def checker_results(run: _Run, filename: str) -> list[tuple[int, int, str]]:

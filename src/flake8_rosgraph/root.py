@@ -14,8 +14,9 @@ found from the checked file itself, in this order:
 2. the nearest **version-control root** (``.git``, ``.hg``, ``.svn``, ``.jj``),
    ignoring one in the home directory or at ``/`` (a dotfiles repository is not
    a ROS workspace);
-3. otherwise the outermost of the current directory (when it contains the
-   file) and the file's ROS package directory, else the file's directory —
+3. otherwise the outermost of the folder the user named (when it holds the
+   file: ``flake8 .``, ``check DIR``) and the file's ROS package directory,
+   else the file's directory — never a folder the user did not name, and
    never ``/`` or the home directory, which hold far more than one project
    (walking them took minutes and gigabytes): a file directly in one of those
    is its own root, analysed alone.
@@ -124,17 +125,22 @@ def _protected() -> set[Path]:
     return protected
 
 
-def discover_root(path: Path, cwd: Path | None = None) -> Path:
-    """The workspace root for ``path`` (a file or directory), found as the module docstring says."""
+def discover_root(path: Path, given: Path | None = None) -> Path:
+    """The workspace root for ``path`` (a file or directory), found as the module docstring says.
+
+    ``given`` is the folder the user named that holds ``path`` (``flake8 DIR``);
+    a directory ``path`` is a named folder itself.
+    """
     start = _start_dir(path)
     found = find_colcon_root(start) or find_vcs_root(start)
     if found is not None:
         return found
     protected = _protected() | {Path(start.anchor)}
     candidates = [start]
-    here = Path(os.path.abspath(cwd if cwd is not None else Path.cwd()))
-    if _is_within(start, here) and here not in protected:
-        candidates.append(here)
+    if given is not None:
+        named = Path(os.path.abspath(given))
+        if _is_within(start, named) and named not in protected:
+            candidates.append(named)
     package = find_package_dir(start)
     if package is not None and package not in protected:
         candidates.append(package)

@@ -49,6 +49,6 @@ def test_nearest_workspace_wins_over_an_enclosing_repository(tmp_path: Path) -> 
 
 def test_fallback_is_the_package_or_the_current_directory(tmp_path: Path) -> None:
     loose = write_tree(tmp_path / "loose", {"pkg/package.xml": "", "pkg/pkg/node.py": "", "other/x.py": ""})
-    assert discover_root(loose / "pkg/pkg/node.py", cwd=tmp_path / "elsewhere") == loose / "pkg"
-    assert discover_root(loose / "pkg/pkg/node.py", cwd=loose) == loose
-    assert discover_root(loose / "other/x.py", cwd=tmp_path / "elsewhere") == loose / "other"
+    assert discover_root(loose / "pkg/pkg/node.py", given=tmp_path / "elsewhere") == loose / "pkg"
+    assert discover_root(loose / "pkg/pkg/node.py", given=loose) == loose
+    assert discover_root(loose / "other/x.py", given=tmp_path / "elsewhere") == loose / "other"

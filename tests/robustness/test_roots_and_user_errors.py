@@ -48,7 +48,7 @@ def test_lone_file_run_from_the_filesystem_root_stays_in_its_folder(tmp_path: Pa
     lone = tmp_path / "scratch" / "node.py"
     lone.parent.mkdir()
     lone.write_text(TALKER)
-    assert discover_root(lone, cwd=Path("/")) == lone.parent
+    assert discover_root(lone, given=Path("/")) == lone.parent
 
 
 @posix_only
@@ -59,7 +59,7 @@ def test_lone_file_in_home_is_analysed_alone(tmp_path: Path, monkeypatch: pytest
     lone = home / "node.py"
     lone.write_text(TALKER)
     monkeypatch.setenv("HOME", str(home))
-    assert discover_root(lone, cwd=home) == lone
+    assert discover_root(lone, given=home) == lone
     env = clean_env(HOME=str(home), XDG_CACHE_HOME=str(tmp_path / "user-cache"))
     done = tool("check", str(lone), "--format", "json", cwd=home, env=env)
     assert done.returncode in (0, 1), done.explain()
@@ -100,6 +100,24 @@ def test_flake8_root_must_be_a_folder(ws: Path, tmp_path: Path, kind: str) -> No
         assert "Traceback" not in done.stderr
 
 
+def test_without_a_marker_the_root_is_the_folder_named_not_the_current_one(tmp_path: Path) -> None:
+    """``check pkg`` run from a markerless parent analyses ``pkg``, not its neighbours."""
+    parent = tmp_path / "downloads"
+    package = parent / "chat_pkg"
+    (package / "chat_pkg").mkdir(parents=True)
+    (package / "package.xml").write_text("<package format='3'><name>chat_pkg</name></package>\n")
+    (package / "chat_pkg" / "talker.py").write_text(TALKER)
+    (parent / "junk").mkdir()
+    (parent / "junk" / "broken.py").write_text("def (:\n")
+    for named in (package, Path("chat_pkg")):
+        done = tool("check", str(named), "--format", "json", cwd=parent)
+        assert done.returncode in (0, 1) and "broken.py" not in done.stdout + done.stderr, done.explain()
+        flaked = flake8("--rosgraph-debug", str(named), cwd=parent)
+        assert flaked.returncode in (0, 1) and "broken.py" not in flaked.stdout + flaked.stderr, flaked.explain()
+    whole = tool("check", ".", "--format", "json", cwd=parent)
+    assert "broken.py" in whole.stdout, "the folder named is analysed whole"
+
+
 def _library_tree(folder: Path, files: int) -> None:
     """A vendored library: many small modules in a few packages, none of them ROS."""
     for index in range(files):
@@ -119,7 +137,7 @@ def downloads(tmp_path: Path) -> Path:
 
 def test_big_unmarked_folder_is_refused_with_the_way_out(downloads: Path) -> None:
     with pytest.raises(RootRefused):
-        discover_root(downloads / "talker.py", cwd=downloads)
+        discover_root(downloads / "talker.py", given=downloads)
     done = tool("check", ".", cwd=downloads)
     assert done.returncode == 2, done.explain()
     assert str(downloads) in done.stderr and "--root DIR" in done.stderr and "ROSGRAPH_ROOT" in done.stderr
@@ -142,12 +160,12 @@ def test_unmarked_folder_below_the_limit_and_big_packages_are_analysed(tmp_path:
     scripts = tmp_path / "scripts"
     _library_tree(scripts, MAX_UNMARKED_PYTHON_FILES - 50)
     (scripts / "talker.py").write_text(TALKER)
-    assert discover_root(scripts / "talker.py", cwd=scripts) == scripts
+    assert discover_root(scripts / "talker.py", given=scripts) == scripts
     package = tmp_path / "generated_pkg"
     _library_tree(package / "generated_pkg", MAX_UNMARKED_PYTHON_FILES + 50)
     (package / "package.xml").write_text("<package format='3'><name>generated_pkg</name></package>\n")
     (package / "generated_pkg" / "talker.py").write_text(TALKER)
-    assert discover_root(package / "generated_pkg" / "talker.py", cwd=package) == package
+    assert discover_root(package / "generated_pkg" / "talker.py", given=package) == package
 
 
 # -- user errors -------------------------------------------------------------------------------
