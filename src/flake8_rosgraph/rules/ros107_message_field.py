@@ -82,7 +82,9 @@ class MessageField(Rule):
     given with `--rosgraph-interfaces`; a message of any other package is not
     checked. Only values the analysis knows are judged (constants, message
     instances, lists of known elements); `msg.x = float(v)` or a value from a
-    parameter of unknown type is accepted. A keyword the class does not have
+    parameter of unknown type is accepted. A value that may be objects of
+    different kinds (a message on one path, a tuple on another the analysis
+    could not tell apart) is reported only when every one is rejected. A keyword the class does not have
     is ignored silently when field checks are off, and is still reported.
 
     ## Example
@@ -149,13 +151,26 @@ class MessageField(Rule):
             what = " (it is a constant)" if name in owner.constants else \
                 " (constructor keyword)" if store.keyword else ""
             return Finding(store.location, self.code, f"{where} has no field '{name}'{what}")
-        for shape in without_none_alternative(list(store.value or ())):
-            why = rejection(found.type, shape)
-            if why is not None:
-                return Finding(store.location, self.code,
-                               f"{where} field '{name}' ({found.type.spelled()}) rejects {why}"
-                               f"{_hint(found.type.base, shape)}")
-        return None
+        shapes = without_none_alternative(list(store.value or ()))
+        verdicts = [(shape, rejection(found.type, shape)) for shape in shapes]
+        rejected = [(shape, why) for shape, why in verdicts if why is not None]
+        if not rejected or (len(rejected) < len(verdicts) and not _one_kind(shapes)):
+            return None
+        shape, why = rejected[0]
+        return Finding(store.location, self.code,
+                       f"{where} field '{name}' ({found.type.spelled()}) rejects {why}"
+                       f"{_hint(found.type.base, shape)}")
+
+
+def _one_kind(shapes: list) -> bool:
+    """Whether the possible values are all of one kind (numbers count as one).
+
+    ``1`` or ``2.5`` at a float field is the classic bug on one of two paths. A
+    message *or* a tuple is something else: values of two classes whose paths
+    the analysis could not keep apart (``if calibrator.is_mono:``), so only a
+    value every alternative of which is rejected is reported then.
+    """
+    return len({"number" if s.kind in ("bool", "int", "float") else s.kind for s in shapes}) == 1
 
 
 #: rclpy's time classes and the message each one's ``to_msg()`` makes.

@@ -15,6 +15,7 @@ setup(
     entry_points={
         'console_scripts': [
             'driver = drive_base.driver:main',
+            'uploader = drive_base.uploader:main',
         ],
     },
 )
