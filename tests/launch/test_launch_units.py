@@ -111,3 +111,28 @@ def test_parameter_file_sections_match_like_rcl(tmp_path):
 ])
 def test_prefix_namespace_like_launch_ros(base, ns, expected):
     assert prefix_namespace(base, ns) == expected
+
+
+def test_cmake_executables_under_other_names_are_known(tmp_path):
+    """Wrappers of add_executable, renamed outputs and component executables are executables too."""
+    pkg = tmp_path / "camera_tools"
+    pkg.mkdir()
+    (pkg / "package.xml").write_text("<package><name>camera_tools</name>"
+                                     "<buildtool_depend>ament_cmake_auto</buildtool_depend></package>")
+    (pkg / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.8)\n"
+        "project(camera_tools)\n"
+        "ament_auto_add_executable(publisher_node src/publisher_node.cpp)\n"
+        "ament_auto_add_executable(rotate_bin src/rotate.cpp)\n"
+        "set_target_properties(rotate_bin PROPERTIES OUTPUT_NAME ${PROJECT_NAME}_rotate)\n"
+        "rclcpp_components_register_node(resize_component PLUGIN \"camera_tools::Resize\"\n"
+        "  EXECUTABLE resize_node)\n"
+        "add_executable(${PROJECT_NAME}_checker src/checker.cpp)\n"
+        "if(BUILD_TESTING)\n"
+        "  ament_add_gtest_executable(test_rotate_live test/test_rotate_live.cpp)\n"
+        "endif()\n"
+        "add_executable(${TOOL_NAME} src/tool.cpp)\n")
+    package = find_packages(tmp_path).packages["camera_tools"]
+    assert sorted(package.executables) == ["camera_tools_checker", "camera_tools_rotate", "publisher_node",
+                                           "resize_node", "rotate_bin", "test_rotate_live"]
+    assert package.complete is False  # ${TOOL_NAME}: the list may hold more

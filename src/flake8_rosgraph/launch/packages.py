@@ -7,7 +7,8 @@ launch file's ``Node(package=…, executable=…)``) finds ``exe`` among
   ``setup.cfg`` or in ``setup.py`` — the latter read with :mod:`ast` and a
   small constant folder (``package_name + '.talker:main'``, f-strings), never
   executed;
-* ``add_executable(...)`` targets and ``install(PROGRAMS ... DESTINATION
+* ``add_executable(...)`` targets (and its wrappers, ``OUTPUT_NAME`` renames and
+  components' ``EXECUTABLE``) and ``install(PROGRAMS ... DESTINATION
   lib/${PROJECT_NAME})`` scripts of an ``ament_cmake`` package.
 
 When a package's list cannot be read completely (an entry point built at run
@@ -300,12 +301,16 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
         _unread(cmake, root, exc, notes)
         return False
     complete = True
+    project = next((args[0] for name, args in commands if name == "project" and args), None)
     for name, args in commands:
-        if name == "add_executable" and args:
-            if "$" in args[0]:
+        if project is not None:
+            args = [arg.replace("${PROJECT_NAME}", project) for arg in args]
+        built = _built_executable(name, args)
+        if built is not None:
+            if "$" in built:
                 complete = False
                 continue
-            package.executables.setdefault(args[0], Executable(args[0], language="cpp"))
+            package.executables.setdefault(built, Executable(built, language="cpp"))
         elif name == "install" and args and args[0].upper() == "PROGRAMS" and "DESTINATION" in args:
             at = args.index("DESTINATION")
             if args[at + 1:at + 2] != ["lib/${PROJECT_NAME}"]:
@@ -318,6 +323,26 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
                 package.executables.setdefault(Path(item).name, Executable(
                     Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
     return complete
+
+
+def _built_executable(command: str, args: list[str]) -> str | None:
+    """The executable a CMake command builds, if it builds one.
+
+    ``add_executable`` and its wrappers (``ament_auto_add_executable``,
+    ``ament_add_gtest_executable``, ``cuda_add_executable`` …) name the target
+    first; ``set_target_properties(… OUTPUT_NAME name)`` renames the file, and
+    ``rclcpp_components_register_node(… EXECUTABLE name)`` builds a stand-alone
+    executable for a component. Names are taken as possible executables even when
+    no ``install(TARGETS …)`` is seen: a missed one must not yield "no such executable".
+    """
+    if not args:
+        return None
+    if command.endswith("add_executable") or (command.startswith("ament_add_") and command.endswith("_executable")):
+        return args[0]
+    keyword = {"set_target_properties": "OUTPUT_NAME", "rclcpp_components_register_node": "EXECUTABLE"}.get(command)
+    if keyword is not None and keyword in args[:-1]:
+        return args[args.index(keyword) + 1]
+    return None
 
 
 def find_packages(root: Path) -> PackageIndex:
