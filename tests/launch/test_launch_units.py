@@ -131,8 +131,10 @@ def test_cmake_executables_under_other_names_are_known(tmp_path):
         "if(BUILD_TESTING)\n"
         "  ament_add_gtest_executable(test_rotate_live test/test_rotate_live.cpp)\n"
         "endif()\n"
-        "add_executable(${TOOL_NAME} src/tool.cpp)\n")
+        "add_executable(${TOOL_NAME} src/tool.cpp)\n"
+        "install(PROGRAMS scripts/calibrate.py DESTINATION lib/${PROJECT_NAME})\n")
     package = find_packages(tmp_path).packages["camera_tools"]
-    assert sorted(package.executables) == ["camera_tools_checker", "camera_tools_rotate", "publisher_node",
+    assert sorted(package.executables) == ["calibrate.py", "camera_tools_checker", "camera_tools_rotate",
+                                           "publisher_node",
                                            "resize_node", "rotate_bin", "test_rotate_live"]
     assert package.complete is False  # ${TOOL_NAME}: the list may hold more

@@ -313,7 +313,7 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
             package.executables.setdefault(built, Executable(built, language="cpp"))
         elif name == "install" and args and args[0].upper() == "PROGRAMS" and "DESTINATION" in args:
             at = args.index("DESTINATION")
-            if args[at + 1:at + 2] != ["lib/${PROJECT_NAME}"]:
+            if args[at + 1:at + 2] not in (["lib/${PROJECT_NAME}"], [f"lib/{project}"]):
                 continue
             for item in args[1:at]:
                 if "$" in item:
