@@ -562,3 +562,32 @@ def test_an_internal_error_in_one_file_costs_only_that_file(tmp_path, monkeypatc
     assert [n.fqn for n in nodes] == ["/other"]
     assert [(d.path, d.severity) for d in diags if "internal error" in d.message] == [
         ("src/two/src/talker.cpp", "error")]
+
+
+def test_generic_publishers_and_subscriptions_take_the_type_as_a_string(tmp_path):
+    """A bag player publishes what it reads with ``create_generic_publisher(name, "pkg/msg/T", qos)``."""
+    write_package(tmp_path, "bag_tools", {"src/player.cpp": """
+        #include "rclcpp/rclcpp.hpp"
+
+        static const char * kType = "sensor_msgs/msg/Imu";
+
+        class Player : public rclcpp::Node
+        {
+        public:
+          Player() : Node("player")
+          {
+            imu_ = create_generic_publisher("imu", kType, rclcpp::QoS(5));
+            odom_ = this->create_generic_subscription(
+              "odom", "nav_msgs/msg/Odometry", 10, [](std::shared_ptr<rclcpp::SerializedMessage>) {});
+            other_ = create_generic_publisher("replayed", topic_type_, 10);
+          }
+        private:
+          std::string topic_type_;
+          rclcpp::GenericPublisher::SharedPtr imu_, other_;
+          rclcpp::GenericSubscription::SharedPtr odom_;
+        };
+        """})
+    found = endpoints(tmp_path)
+    assert ("/player", "publishers", "/imu", "sensor_msgs/msg/Imu") in found
+    assert ("/player", "subscriptions", "/odom", "nav_msgs/msg/Odometry") in found
+    assert ("/player", "publishers", "/replayed", None) in found  # a type only known at run time

@@ -17,7 +17,10 @@ METHOD_KINDS: dict[str, str] = {
     "create_publisher": "publishers", "create_subscription": "subscriptions",
     "create_service": "services", "create_client": "clients",
     "create_action_server": "action_servers", "create_action_client": "action_clients",
+    "create_generic_publisher": "publishers", "create_generic_subscription": "subscriptions",
 }
+#: Methods taking the message type as a string after the name (``"std_msgs/msg/String"``).
+GENERIC_METHODS = frozenset({"create_generic_publisher", "create_generic_subscription"})
 #: ``rclcpp_action`` free functions: the node (or its interfaces) first, then the name.
 ACTION_FUNCTIONS: dict[str, str] = {"create_server": "action_servers", "create_client": "action_clients"}
 COMPONENT_MACRO = "RCLCPP_COMPONENTS_REGISTER_NODE"

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..graph.model import Diagnostic
-from .calls import (ACTION_FUNCTIONS, COMPONENT_MACRO, METHOD_KINDS, NODE_BASES, called_name, creates_node,
-                    endpoint_form, is_self, made_class, qos_of, receiver_of, template_argument)
+from .calls import (ACTION_FUNCTIONS, COMPONENT_MACRO, GENERIC_METHODS, METHOD_KINDS, NODE_BASES, called_name,
+                    creates_node, endpoint_form, is_self, made_class, qos_of, receiver_of, template_argument)
 from .facts import ClassFact, EndpointFact, FileFacts, NodeDecl, Owner, ParameterFact
 from .sources import CppSource
 from .syntax import MAX_SYNTAX_NODES, BudgetExceeded, SourceText, damage_diagnostic, text
@@ -313,8 +313,13 @@ class _Reader:
         args = call_args(call)
         if name_index >= len(args):
             return
-        qos = qos_of(args[name_index + 1]) if kind in ("publishers", "subscriptions") \
-            and name_index + 1 < len(args) else None
+        message_type = template_argument(function)
+        qos_at = name_index + 1
+        if called_name(function) in GENERIC_METHODS:  # (name, "pkg/msg/Type", qos, ...)
+            qos_at += 1
+            types = self.values.strings(args[name_index + 1], site.func) if qos_at - 1 < len(args) else None
+            message_type = next(iter(types)).replace("/", "::") if types and len(types) == 1 else None
+        qos = qos_of(args[qos_at]) if kind in ("publishers", "subscriptions") and qos_at < len(args) else None
         written = text(call).split("\n", 1)[0][:80]
         self.values.read_parameter = False
         names = self._choices(args[name_index], site.func)
@@ -323,7 +328,7 @@ class _Reader:
             # and the C++ nodes are not bound to launch files, so the name may also be another one.
             names += (None,)
         self.facts.endpoints.append(EndpointFact(
-            kind, names, template_argument(function), qos,
+            kind, names, message_type, qos,
             self.src.location(call), self.owner(receiver, site.func, site.cls), written))
 
     # -- helpers ---------------------------------------------------------------------------------
