@@ -84,7 +84,9 @@ class MessageField(Rule):
     instances, lists of known elements); `msg.x = float(v)` or a value from a
     parameter of unknown type is accepted. A value that may be objects of
     different kinds (a message on one path, a tuple on another the analysis
-    could not tell apart) is reported only when every one is rejected. A keyword the class does not have
+    could not tell apart; messages of two types) is reported only when every
+    one is rejected; an object that may be one of several message types, only
+    when none of them has the field. A keyword the class does not have
     is ignored silently when field checks are off, and is still reported.
 
     ## Example
@@ -121,14 +123,16 @@ class MessageField(Rule):
                 yield Finding(built.location, self.code,
                               f"{display_name(key)} takes keyword arguments only, not "
                               f"{built.positional} positional")
+        stores: dict[tuple, list[FieldStore]] = {}
         for store in merge_contexts(facts.stores):
-            finding = self._store_problem(catalogue, store)
-            if finding is not None:
-                yield finding
+            stores.setdefault((store.location, store.path, store.keyword), []).append(store)
+        for group in stores.values():
+            yield from _unanimous([self._store_problem(catalogue, store) for store in group])
+        reads: dict[tuple, list[FieldRead]] = {}
         for read in facts.reads:
-            finding = self._read_problem(catalogue, read)
-            if finding is not None:
-                yield finding
+            reads.setdefault((read.location, read.path), []).append(read)
+        for group in reads.values():
+            yield from _unanimous([self._read_problem(catalogue, read) for read in group])
 
     def _read_problem(self, catalogue: Catalogue, read: FieldRead) -> Finding | None:
         root = catalogue.get(message_key(read.message))
@@ -162,6 +166,16 @@ class MessageField(Rule):
                        f"{_hint(found.type.base, shape)}")
 
 
+def _unanimous(problems: list[Finding | None]) -> list[Finding]:
+    """The first problem of one place, when every message type the object may be has one.
+
+    ``msg = Twist() if humble else TwistStamped()`` followed, on the path that knows
+    which, by ``msg.linear.x = …``: the analysis sees both types at the store and
+    must not report the field the other one lacks.
+    """
+    return [problems[0]] if problems and all(problems) else []
+
+
 def _one_kind(shapes: list) -> bool:
     """Whether the possible values are all of one kind (numbers count as one).
 
@@ -170,7 +184,7 @@ def _one_kind(shapes: list) -> bool:
     the analysis could not keep apart (``if calibrator.is_mono:``), so only a
     value every alternative of which is rejected is reported then.
     """
-    return len({"number" if s.kind in ("bool", "int", "float") else s.kind for s in shapes}) == 1
+    return len({"number" if s.kind in ("bool", "int", "float") else (s.kind, s.cls) for s in shapes}) == 1
 
 
 #: rclpy's time classes and the message each one's ``to_msg()`` makes.

@@ -16,6 +16,7 @@ setup(
         'console_scripts': [
             'driver = drive_base.driver:main',
             'uploader = drive_base.uploader:main',
+            'distro_driver = drive_base.distro_cmd:main',
         ],
     },
 )
