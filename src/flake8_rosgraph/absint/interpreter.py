@@ -376,8 +376,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return atoms([ModuleAtom(full)])
         module = self.program.ensure(base)
         if module is not None:
-            return self.load_global(module, name) \
-                if name in module.globals or name in self.program.star_names(module) else TOP
+            if name in module.globals or name in self.program.star_names(module):
+                return self.load_global(module, name)
+            # A workspace folder named like a library (a ROS package's ``launch/``) that lacks the
+            # name: Python would fail on it, so working code imports the library's.
+            return self.extern(full) if self.lib.knows(full) else TOP
         return self.extern(full)
 
     def extern(self, qualname: str) -> Value:

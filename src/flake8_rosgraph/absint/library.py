@@ -203,6 +203,11 @@ class LibraryModel:
                 return qualname
         return qualname
 
+    def knows(self, qualname: str) -> bool:
+        """Whether a stub models ``qualname`` (a function, class or constant)."""
+        name = self.canonical(qualname)
+        return name in self.functions or name in self.classes or name in self.constants
+
     def mro(self, qualname: str) -> list[str]:
         """Library classes from ``qualname`` up its modelled bases (depth-first, no repeats)."""
         known = self._mro.get(qualname)

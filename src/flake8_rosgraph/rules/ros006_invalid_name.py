@@ -55,10 +55,10 @@ class InvalidName(Rule):
     node started that way in a namespace is still judged at the root. Under a
     launch file's namespace, only a name that starts with the root's `//`
     is rebuilt in that namespace; a namespace the launch file computes in a
-    way the analysis cannot follow makes such names unknown (not checked). A
-    launch file that starts the node through an executable the analysis cannot
-    bind to its code (a name built from a launch argument) does not count: the
-    node is then judged at the root.
+    way the analysis cannot follow makes such names unknown (not checked). When
+    a launch file starts an executable of the node's package that the analysis
+    cannot match to code (built from a launch argument) in a namespace, the node
+    may be that one: its namespace-built names are not judged at the root then.
 
     ## Example
     ```python
@@ -85,6 +85,7 @@ class InvalidName(Rule):
     summary = "a node, namespace, topic, service, action or parameter name breaks the rcl/rmw validation rules"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        namespaced = _packages_maybe_namespaced(graph)
         for node in graph.nodes:
             if node.invalid:
                 yield Finding(node.location, self.code, f"rcl rejects node '{_node_label(node)}': {node.invalid}")
@@ -93,6 +94,22 @@ class InvalidName(Rule):
                     shown = entity.raw_name if entity.raw_name is not None else entity.name
                     message = f"rcl rejects {NAME_NOUN[entity.kind]} name '{shown}': {entity.invalid}"
                     if names.built_at_root(entity.raw_name, node.namespace):
+                        if node.launch is None and _in_package(node, namespaced):
+                            continue  # a launch file may start it in a namespace: the root is a guess
                         message += (" (built from the node's namespace, which is the root namespace '/'"
                                     f"{_where_root(node)}: ns + '/x' gives '//x')")
                     yield Finding(entity.location, self.code, message)
+
+
+def _packages_maybe_namespaced(graph: RosGraph) -> frozenset[str]:
+    """Packages a launch file starts an executable of, not matched to code, in a namespace
+    (a name built from a launch argument: unknown, or its placeholder default)."""
+    return frozenset(
+        launched.package for system in graph.systems for launched in system.nodes
+        if launched.package and launched.target.status in ("unknown", "missing-executable")
+        and (launched.is_unresolved("namespace") or (launched.namespace or "/").strip("/")))
+
+
+def _in_package(node: RosNode, packages: frozenset[str]) -> bool:
+    """Whether the node's code lies in a folder named like one of ``packages``."""
+    return bool(packages) and not packages.isdisjoint(node.location.path.split("/")[:-1])

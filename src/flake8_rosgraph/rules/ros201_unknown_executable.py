@@ -25,7 +25,10 @@ class UnknownExecutable(Rule):
     Only packages that are in the analysed workspace are judged: an
     installed package (`robot_state_publisher`) is not. A package whose
     executables cannot all be read statically (an entry point built at run
-    time, a CMake variable in a target name) is not judged either.
+    time, a CMake variable in a target name) is not judged either. A launch
+    file that another launch file of the workspace includes is judged as
+    included, with the arguments its includers pass, not alone with its
+    placeholder defaults (`LaunchConfiguration('sensor', default='sensor_default')`).
 
     ## Example
     ```python
@@ -49,10 +52,13 @@ class UnknownExecutable(Rule):
                "(only for packages that are in the workspace)")
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        included = {path for system in graph.systems for path in system.files[1:]}
         for system in graph.systems:
             for node in system.nodes:
                 if node.target.status != "missing-executable":
                     continue
+                if system.launch_file in included and node.location.path == system.launch_file:
+                    continue  # judged where it is included, with the values passed to it
                 message = f"package '{node.package}' has no executable '{node.executable}'"
                 close = sorted(k for k in node.target.known
                                if names.edit_distance(k, node.executable or "", 2) <= 2)
