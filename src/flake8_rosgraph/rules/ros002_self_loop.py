@@ -7,6 +7,7 @@ from typing import Iterator
 from ..graph.model import Entity, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
+from .launch_context import in_package, launched_in_namespace, packages_maybe_namespaced
 from .vocabulary import related
 
 
@@ -27,7 +28,10 @@ class SelfLoop(Rule):
     monitoring, or a relay that republishes). Exempt names are not reported:
     a node that broadcasts transforms and also listens to `/tf` through a tf2
     `TransformListener` is normal. The rule compares resolved names only; an unresolved name never
-    makes a loop. A node class instantiated by several executables that each
+    makes a loop. A node that launch files start in a namespace (one per robot)
+    and that publishes and subscribes an absolute name is not reported: the
+    absolute name is a bus its instances share on purpose (a swarm's votes),
+    and each instance hears the others. A node class instantiated by several executables that each
     add entities from their own module (a reader executable publishing what a
     parser executable subscribes to, on one driver class) is not a loop: ends
     created in two files other than the node's own are not compared.
@@ -60,7 +64,9 @@ class SelfLoop(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         exempt = ExemptNames.build(config.external_names)
+        namespaced = packages_maybe_namespaced(graph)
         for node in graph.nodes:
+            instances = launched_in_namespace(node) or (node.launch is None and in_package(node, namespaced))
             published: dict[str, list[Entity]] = defaultdict(list)
             for pub in node.of_kind("publishers"):
                 if pub.name is not None and pub.name not in exempt:
@@ -68,12 +74,19 @@ class SelfLoop(Rule):
             for sub in node.of_kind("subscriptions"):
                 if sub.name not in published:
                     continue
+                if instances and _absolute(sub) and all(_absolute(p) for p in published[sub.name]):
+                    continue  # one bus shared by the instances in their namespaces: each hears the others
                 pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)),
                               key=lambda e: e.location)
                 if pubs:
                     message = (f"node '{node.fqn or '?'}' subscribes to topic '{sub.name}' that it publishes "
                                f"at {pubs[0].location.short()}")
                     yield Finding(sub.location, self.code, message, tuple(related(p) for p in pubs))
+
+
+def _absolute(entity: Entity) -> bool:
+    """Whether the name is written absolute (``/swarm/votes``): it escapes the node's namespace."""
+    return (entity.raw_name or "").startswith("/")
 
 
 def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:

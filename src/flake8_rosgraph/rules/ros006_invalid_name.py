@@ -6,6 +6,7 @@ from typing import Iterator
 from ..graph import names
 from ..graph.model import RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
+from .launch_context import in_package, packages_maybe_namespaced
 from .vocabulary import NAME_NOUN
 
 
@@ -85,7 +86,7 @@ class InvalidName(Rule):
     summary = "a node, namespace, topic, service, action or parameter name breaks the rcl/rmw validation rules"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
-        namespaced = _packages_maybe_namespaced(graph)
+        namespaced = packages_maybe_namespaced(graph)
         for node in graph.nodes:
             if node.invalid:
                 yield Finding(node.location, self.code, f"rcl rejects node '{_node_label(node)}': {node.invalid}")
@@ -94,22 +95,9 @@ class InvalidName(Rule):
                     shown = entity.raw_name if entity.raw_name is not None else entity.name
                     message = f"rcl rejects {NAME_NOUN[entity.kind]} name '{shown}': {entity.invalid}"
                     if names.built_at_root(entity.raw_name, node.namespace):
-                        if node.launch is None and _in_package(node, namespaced):
+                        if node.launch is None and in_package(node, namespaced):
                             continue  # a launch file may start it in a namespace: the root is a guess
                         message += (" (built from the node's namespace, which is the root namespace '/'"
                                     f"{_where_root(node)}: ns + '/x' gives '//x')")
                     yield Finding(entity.location, self.code, message)
 
-
-def _packages_maybe_namespaced(graph: RosGraph) -> frozenset[str]:
-    """Packages a launch file starts an executable of, not matched to code, in a namespace
-    (a name built from a launch argument: unknown, or its placeholder default)."""
-    return frozenset(
-        launched.package for system in graph.systems for launched in system.nodes
-        if launched.package and launched.target.status in ("unknown", "missing-executable")
-        and (launched.is_unresolved("namespace") or (launched.namespace or "/").strip("/")))
-
-
-def _in_package(node: RosNode, packages: frozenset[str]) -> bool:
-    """Whether the node's code lies in a folder named like one of ``packages``."""
-    return bool(packages) and not packages.isdisjoint(node.location.path.split("/")[:-1])
