@@ -361,3 +361,96 @@ def test_library_models_wait_for_message_and_keyword_only_creation(tmp_path: Pat
         ("subscriptions", "/lab/status", "std_msgs/msg/String", None),
         ("timers", None, None, 0.5),
     ]
+
+
+def _pattern_package(patterns: int) -> dict[str, str]:
+    """A swarm package: a base node class with a gate that wraps callbacks in a closure, one
+    module per behaviour (each its own message and topic), and one helper that inits, builds
+    and spins whichever node class each executable's ``main`` passes it."""
+    files = {
+        "swarm/package.xml": PACKAGE_XML.format(name="swarm", build="ament_python"),
+        "swarm/swarm/__init__.py": "",
+        "swarm/swarm/spin.py": """
+            import rclpy
+
+
+            def init_and_spin(args, node_class):
+                rclpy.init(args=args)
+                rclpy.spin(node_class())
+        """,
+        "swarm/swarm/base.py": """
+            from rclpy.node import Node
+
+
+            class Behaviour(Node):
+                def __init__(self, name):
+                    super().__init__(name)
+                    self.enabled = True
+
+                def gated(self, callback):
+                    def run():
+                        if self.enabled:
+                            callback()
+                    return lambda: run()
+        """,
+    }
+    scripts = ", ".join(f"'behaviour_{i} = swarm.behaviour_{i}:main'" for i in range(patterns))
+    files["swarm/setup.py"] = f"""
+        from setuptools import setup
+
+        setup(name='swarm', packages=['swarm'], entry_points={{'console_scripts': [{scripts}]}})
+    """
+    nodes = "".join(f"\n        Node(package='swarm', executable='behaviour_{i}', namespace='robot_1'),"
+                    for i in range(patterns))
+    files["swarm/launch/robot.launch.py"] = f"""
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([{nodes}
+    ])
+"""
+    for index in range(patterns):
+        message = "String" if index % 2 else "Int32"
+        files[f"swarm/swarm/behaviour_{index}.py"] = f"""
+            from std_msgs.msg import {message}
+
+            from swarm.base import Behaviour
+            from swarm.spin import init_and_spin
+
+
+            class Behaviour{index}(Behaviour):
+                def __init__(self):
+                    super().__init__('behaviour_{index}')
+                    self.out = self.create_publisher({message}, 'behaviour_{index}/out', 10)
+                    self.message = {message}()
+                    self.create_timer(0.5, self.gated(self.tick))
+
+                def tick(self):
+                    self.out.publish(self.message)
+
+
+            def main(args=None):
+                init_and_spin(args, Behaviour{index})
+        """
+    return files
+
+
+def test_classes_handed_to_a_shared_helper_keep_their_own_nodes(tmp_path: Path) -> None:
+    """Past the per-function context bound, the classes and functions passed still decide what
+    runs: each of twelve executables builds its own node, and objects of different classes
+    never share fields (no cross-class publish type mismatch)."""
+    from flake8_rosgraph.launch.api import judged_graph
+    from flake8_rosgraph.rules import RuleConfig, run_rules
+
+    write(tmp_path, _pattern_package(12))
+    found = publishers(tmp_path)
+    for index in range(12):
+        assert found.get(f"/behaviour_{index}") == [f"/behaviour_{index}/out"], found
+    graph = build_graph(tmp_path)
+    launched = sorted((n.executable, n.target.status) for s in graph.systems for n in s.nodes)
+    assert launched == sorted((f"behaviour_{i}", "found") for i in range(12))  # every launch tied to its code
+    judged = judged_graph(graph, graph.systems)
+    assert {n.fqn for n in judged.nodes} >= {f"/robot_1/behaviour_{i}" for i in range(12)}
+    assert run_rules(judged, RuleConfig(), ["ROS104"]) == []

@@ -36,10 +36,13 @@ from typing import Hashable
 from .callgraph import CallGraph
 from .library import LibraryModel
 from .program import Program
-from .values import BOTTOM, TOP, Value
+from .values import BOTTOM, TOP, BoundMethod, ClassAtom, FuncAtom, Value
 
 #: Contexts per function before further calls share one all-⊤ context.
 MAX_CONTEXTS = 8
+#: Past :data:`MAX_CONTEXTS`, contexts per function that still keep the functions and classes
+#: passed (which code runs), their other arguments ⊤.
+MAX_CODE_CONTEXTS = 32
 #: Task runs the entry points of one module may cause before their unfinished work becomes
 #: unknown (the busiest module of navigation2 + ros2cli needs 367).
 ENTRY_TASK_RUNS = 2000
@@ -106,6 +109,7 @@ class Analysis:
         self.readers: dict[Hashable, dict[Task, None]] = {}
         self.contexts: dict[int, dict[tuple, None]] = {}
         self._context_counts: dict[tuple, set[tuple]] = {}
+        self._code_contexts: dict[tuple, set[tuple]] = {}
         self._growth: dict[Hashable, int] = {}
         self._overflowed: set[int] = set()
         self.effects: dict[Task, dict[tuple, Effect]] = {}
@@ -201,13 +205,14 @@ class Analysis:
         seen = self.contexts.setdefault(fid, {})
         counted = self._context_counts.setdefault(bucket, set())
         if ctx not in seen and rest not in counted and len(counted) >= MAX_CONTEXTS:
-            ctx = ((ctx[0],) if method else ()) + tuple(TOP for _ in ctx[1 if method else 0:])
+            ctx = ((ctx[0],) if method else ()) + self._code_only(bucket, rest)
             if fid not in self._overflowed:
                 self._overflowed.add(fid)
                 self.diagnostics.append(Diagnostic(
                     func.module.path, getattr(func.node, "lineno", 1),
                     f"{func.qualname} is called in more than {MAX_CONTEXTS} different ways; "
-                    "further calls are analysed with unknown arguments", "info"))
+                    "further calls are analysed with unknown arguments but the functions and "
+                    "classes they pass", "info"))
         seen[ctx] = None
         counted.add(ctx[1:] if method else ctx)
         self.called.add(fid)
@@ -216,13 +221,24 @@ class Analysis:
             self.enqueue(task)
         return task
 
+    def _code_only(self, bucket: tuple, rest: tuple) -> tuple:
+        """``rest`` with every argument but functions and classes made ⊤: a helper that runs
+        what it is given (``init_and_spin(args, PatternNode)``, ``register(cb)``) still runs
+        each one, however many call it. Bounded by :data:`MAX_CODE_CONTEXTS`."""
+        kept = tuple(arg if _is_code(arg) else TOP for arg in rest)
+        known = self._code_contexts.setdefault(bucket, set())
+        if all(arg.is_top for arg in kept) or (kept not in known and len(known) >= MAX_CODE_CONTEXTS):
+            return tuple(TOP for _ in rest)
+        known.add(kept)
+        return kept
+
     def context_index(self, fid: int, ctx: tuple) -> int:
         """A stable small number for a context of ``fid`` (its order of discovery), capped
-        at :data:`MAX_CONTEXTS` so that recursion through allocation (a constructor that
-        builds another instance of its class) makes finitely many objects."""
+        at the contexts a function can have so that recursion through allocation (a
+        constructor that builds another instance of its class) makes finitely many objects."""
         for index, known in enumerate(self.contexts.get(fid, ())):
             if known == ctx:
-                return min(index, MAX_CONTEXTS)
+                return min(index, MAX_CONTEXTS + MAX_CODE_CONTEXTS)
         return 0
 
     def run(self) -> None:
@@ -407,3 +423,8 @@ def _numbers_only(value: Value) -> bool:
     consts = value.consts()
     return bool(consts) and all(isinstance(c, (int, float)) and not isinstance(c, bool)
                                 for c in consts)
+
+
+def _is_code(value: Value) -> bool:
+    """Whether ``value`` is only user functions, bound methods and classes (what code runs)."""
+    return bool(value.atoms) and all(isinstance(a, (FuncAtom, BoundMethod, ClassAtom)) for a in value.atoms)
