@@ -454,3 +454,93 @@ def test_classes_handed_to_a_shared_helper_keep_their_own_nodes(tmp_path: Path) 
     judged = judged_graph(graph, graph.systems)
     assert {n.fqn for n in judged.nodes} >= {f"/robot_1/behaviour_{i}" for i in range(12)}
     assert run_rules(judged, RuleConfig(), ["ROS104"]) == []
+
+
+FRAMEWORK_PACKAGE = {
+    "robot_cli/package.xml": PACKAGE_XML.format(name="robot_cli", build="ament_python").replace(
+        "</export>", "<rqt_gui plugin=\"${prefix}/plugin.xml\"/></export>"),
+    "robot_cli/plugin.xml": """
+        <library path="src">
+          <class name="BatteryMonitor" type="robot_cli.monitor.BatteryMonitor" base_class_type="rqt_gui_py::Plugin"/>
+          <class name="Native" type="robot_cli::NativePlugin" base_class_type="rqt_gui_cpp::Plugin"/>
+        </library>
+    """,
+    "robot_cli/setup.py": """
+        from setuptools import setup
+
+        setup(name='robot_cli', packages=['robot_cli'], entry_points={
+            'ros2cli.command': ['robot = robot_cli.command:RobotCommand'],
+            'robot_cli.verb': ['dock = robot_cli.verbs:DockVerb'],
+        })
+    """,
+    "robot_cli/robot_cli/__init__.py": "",
+    "robot_cli/robot_cli/base.py": """
+        class VerbBase:
+            def add_arguments(self, parser, cli_name):
+                pass
+    """,
+    "robot_cli/robot_cli/verbs.py": """
+        import rclpy
+        from std_srvs.srv import Trigger
+
+        from robot_cli.base import VerbBase
+
+
+        class DockVerb(VerbBase):
+            def main(self, *, args):
+                node = rclpy.create_node('dock_cli')
+                client = node.create_client(Trigger, '/dock')
+                return client.call(Trigger.Request())
+    """,
+    "robot_cli/robot_cli/command.py": """
+        class RobotCommand:
+            def main(self, *, parser, args):
+                return 0
+    """,
+    "robot_cli/robot_cli/monitor.py": """
+        from rclpy.node import Node
+        from sensor_msgs.msg import BatteryState
+
+
+        class Proxy:
+            '''Forwards what it lacks to the node it wraps.'''
+            def __init__(self, node):
+                self._node = node
+
+            def __getattr__(self, name):
+                return getattr(self._node, name)
+
+
+        class BatteryMonitor:
+            def __init__(self, context):
+                self.node = Proxy(Node('battery_monitor'))
+
+            def start(self, topic='/battery_state'):
+                # the plugin host calls it with the topic the user picks: not the default
+                self.node.create_subscription(BatteryState, topic, self.on_state, 10)
+
+            def restore(self):
+                self.node.create_subscription(BatteryState, '/battery_alarm', self.on_state, 10)
+
+            def on_state(self, msg):
+                pass
+    """,
+}
+
+
+def test_classes_frameworks_instantiate_are_entry_points(tmp_path: Path) -> None:
+    """CLI verbs registered as entry points and rqt plugins exported in plugin.xml are built by
+    their framework; their public methods nobody calls run with unknown arguments."""
+    from flake8_rosgraph.registrations import registered_classes
+
+    write(tmp_path, FRAMEWORK_PACKAGE)
+    assert registered_classes(tmp_path) == {"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb",
+                                            "robot_cli.monitor.BatteryMonitor"}
+    graph = build_graph(tmp_path)
+    ends = {(n.fqn, e.kind, e.name) for n in graph.nodes for e in n.entities
+            if e.kind in ("clients", "subscriptions")}
+    assert ("/dock_cli", "clients", "/dock") in ends
+    assert ("/battery_monitor", "subscriptions", "/battery_alarm") in ends  # through __getattr__
+    # the topic the host passes is unknown: never the default '/battery_state'
+    assert ("/battery_monitor", "subscriptions", None) in ends
+    assert not any(name == "/battery_state" for _, _, name in ends)

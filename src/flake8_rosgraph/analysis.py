@@ -19,8 +19,9 @@ from .absint.program import Program
 from .escaping import escape_text
 from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph
-from .safe_io import read_text
 from .options import Buffers
+from .registrations import registered_classes
+from .safe_io import read_text
 from .workspace import load_workspace
 
 
@@ -134,7 +135,8 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         workspace = load_workspace(root, buffers)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
-        analysis = Analysis(program, library)
+        analysis = Analysis(program, library,
+                            framework_classes=registered_classes(root) if root.is_dir() else frozenset())
         analysis.run()
         diagnostics.extend(Diagnostic(m.path, 1, why) for m, why in program.rejected)
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)

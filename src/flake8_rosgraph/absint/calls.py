@@ -180,6 +180,7 @@ class CallSemantics:
     def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
         obj = Obj(self._site(node), cls)
         self.an.allocated.add(cls.cid)
+        self.an.objects.setdefault(cls.cid, set()).add(obj)
         self.construct(obj, args, node)
         return atoms([obj])
 
@@ -199,6 +200,7 @@ class CallSemantics:
         klass = self.program.classes[cid]
         obj = Obj(f"entry:{klass.module.path}:{klass.qualname}", ClassAtom(cid))
         self.an.allocated.add(cid)
+        self.an.objects.setdefault(cid, set()).add(obj)
         # Lookups need a frame; the class's module top level is the task that re-runs
         # (harmlessly) if what they read grows.
         outer, self.frame = self.frame, Frame(("mod", klass.module.name, ()), klass.module)
@@ -206,6 +208,25 @@ class CallSemantics:
             self._schedule_entry(obj, cid)
         finally:
             self.frame = outer
+
+    def call_uncalled(self, obj: Obj, names: list[str]) -> bool:
+        """Schedule each of ``obj``'s methods ``names`` that has no task yet, bound to ``obj``,
+        every other argument unknown; whether any was scheduled."""
+        klass = self.program.classes[obj.cls.cid]
+        outer, self.frame = self.frame, Frame(("mod", klass.module.name, ()), klass.module)
+        added = False
+        try:
+            for name in names:
+                for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
+                    if isinstance(atom, BoundMethod) and atom.fid not in self.an.called:
+                        func = self.program.functions[atom.fid]
+                        if func.kind in ("function", "property"):
+                            self.an.schedule(self.an.function_task(
+                                atom.fid, tuple(self._bind_loose(func, atom.receiver))))
+                            added = True
+        finally:
+            self.frame = outer
+        return added
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)

@@ -36,7 +36,7 @@ from typing import Hashable
 from .callgraph import CallGraph
 from .library import LibraryModel
 from .program import Program
-from .values import BOTTOM, TOP, BoundMethod, ClassAtom, FuncAtom, Value
+from .values import BOTTOM, TOP, BoundMethod, ClassAtom, FuncAtom, Obj, Value
 
 #: Contexts per function before further calls share one all-⊤ context.
 MAX_CONTEXTS = 8
@@ -52,6 +52,8 @@ MAX_BLOCK_VISITS = 4000
 WIDEN_AFTER = 3
 #: Growths of a heap cell holding only numbers before it is widened to ⊤.
 HEAP_WIDEN_AFTER = 3
+#: Objects of one class whose uncalled public methods are analysed (see ``_uncalled_methods``).
+MAX_OBJECTS_PER_CLASS = 2
 
 Task = tuple  # ("mod", module name, ()) | ("fn", fid, ctx)
 
@@ -102,9 +104,12 @@ class Analysis:
     """Runs the whole-program fixpoint and keeps its results (heap, effects, diagnostics)."""
 
     def __init__(self, program: Program, library: LibraryModel, max_task_runs: int | None = None,
-                 every_module_is_entry: bool = False):
+                 every_module_is_entry: bool = False, framework_classes: frozenset[str] = frozenset()):
         self.program = program
         self.library = library
+        #: ``module.Class`` names some framework instantiates (a plugin registry, a command
+        #: line's entry points): entry points even when no analysed code instantiates them.
+        self.framework_classes = framework_classes
         self.heap: dict[Hashable, Value] = {}
         self.readers: dict[Hashable, dict[Task, None]] = {}
         self.contexts: dict[int, dict[tuple, None]] = {}
@@ -116,6 +121,9 @@ class Analysis:
         self.calls: dict[Task, dict] = {}          # task -> its call sites (see callgraph.py)
         self.falls_off: set[Task] = set()          # tasks whose body may end without return
         self.allocated: set[int] = set()           # cids instantiated by analysed code
+        #: The objects of each workspace class, by allocation site: their methods nobody calls
+        #: are entry points too (the framework or the user calls them).
+        self.objects: dict[int, set[Obj]] = {}
         self.called: set[int] = set()              # fids with at least one task
         #: Calls evaluated at least once, as (path, line, col_offset): what ``--explain`` reads
         #: to tell a call the analysis reached from one it never got to.
@@ -251,7 +259,8 @@ class Analysis:
             if self.program.ensure(name) is not None:
                 self.enqueue(("mod", name, ()))
         self._drain()
-        while not self.stopped and (self._uncalled_functions() or self._entry_classes()):
+        while not self.stopped and (self._uncalled_functions() or self._entry_classes()
+                                    or self._uncalled_methods()):
             self._drain()
 
     def _drain(self) -> None:
@@ -357,17 +366,34 @@ class Analysis:
         return added
 
     def _entry_classes(self) -> bool:
-        """Leaf subclasses of ``entry`` library classes that nothing instantiates."""
+        """Leaf subclasses of ``entry`` library classes, and the classes frameworks
+        instantiate, that no analysed code instantiates."""
         added = False
         bases_of = {c.cid: self._interp.user_bases(c.cid) for c in self.program.classes}
         has_sub = {b for bases in bases_of.values() for b in bases}
         for klass in self.program.classes:
             cid = klass.cid
-            if cid in self.allocated or cid in has_sub:
+            if cid in self.allocated:
                 continue
-            if any(self.library.class_flag(q, "entry") for q in self._interp.library_bases(cid)):
+            registered = klass.parent is None and f"{klass.module.name}.{klass.qualname}" in self.framework_classes
+            if registered or (cid not in has_sub and any(
+                    self.library.class_flag(q, "entry") for q in self._interp.library_bases(cid))):
                 self._interp.instantiate_entry(cid)
                 added = True
+        return added
+
+    def _uncalled_methods(self) -> bool:
+        """Public methods of analysed objects that no analysed code calls, with unknown
+        arguments: a framework, a command line or another program calls them (a plugin's
+        ``main(args)``, a client's ``arm()``). Never with their defaults, which the real
+        caller may not use. The first :data:`MAX_OBJECTS_PER_CLASS` objects of a class
+        (by allocation site) stand for all of them."""
+        added = False
+        for cid in sorted(self.objects):
+            names = {name for base in [cid, *self._interp.user_bases(cid)]
+                     for name in self.program.classes[base].methods if not name.startswith("_")}
+            for obj in sorted(self.objects[cid], key=lambda o: o.site)[:MAX_OBJECTS_PER_CLASS]:
+                added |= self._interp.call_uncalled(obj, sorted(names))
         return added
 
     def schedule(self, task: Task) -> None:

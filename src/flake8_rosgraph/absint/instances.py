@@ -12,7 +12,9 @@ it, recorded like stub effects at the site in the workspace:
   Arguments: ``object`` (the instances the chain starts from), ``path`` (the attribute
   chain below them, ``"a.b"``) and ``value``. The chain lets ``msg.header.stamp = t`` be
   checked although nothing modelled what ``msg.header`` holds.
-* ``get_attribute``: a read ``x.a.b``, the same way (``object``, ``path``).
+* ``get_attribute``: a read ``x.a.b``, the same way (``object``, ``path``), and ``probed``:
+  whether the function tests that attribute with ``hasattr``/``getattr`` (the read may be
+  on the path where it exists).
 
 Nothing here gives these facts a meaning; they are data for whoever reads effects.
 """
@@ -51,7 +53,23 @@ class InstanceFacts:
     def record_attribute_load(self, node: ast.Attribute, holder: Value) -> None:
         found, path = self._chain_root(node, holder)
         if found:
-            self._record(GET_ATTRIBUTE, (("object", atoms(found)), ("path", const(path))), node)
+            probed = path.split(".", 1)[0] in self._probed_names()
+            self._record(GET_ATTRIBUTE, (("object", atoms(found)), ("path", const(path)),
+                                         ("probed", const(probed))), node)
+
+    def _probed_names(self) -> frozenset[str]:
+        """Attribute names the running function tests before use (``hasattr(x, 'header')``,
+        ``getattr(x, 'header', None)``): a read of one may be on an object without it."""
+        task = self.frame.task
+        body = self.program.functions[task[1]].node if task[0] == "fn" else self.frame.module.tree
+        known = self._probes.get(id(body))
+        if known is None:
+            known = self._probes[id(body)] = frozenset(
+                call.args[1].value for call in ast.walk(body)
+                if isinstance(call, ast.Call) and isinstance(call.func, ast.Name)
+                and call.func.id in ("hasattr", "getattr") and len(call.args) >= 2
+                and isinstance(call.args[1], ast.Constant) and isinstance(call.args[1].value, str))
+        return known
 
     def _chain_root(self, node: ast.Attribute, holder: Value) -> tuple[list[Obj], str]:
         """The unmodelled instances ``node``'s attribute chain starts from (nearest first),

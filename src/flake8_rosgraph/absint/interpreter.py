@@ -35,6 +35,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self.lib = analysis.library
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
+        self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
 
     # =====================================================================================
     # tasks and CFGs

@@ -33,6 +33,12 @@ class ObjectSemantics:
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
+                if field_value.is_bottom and not attr.startswith("__"):
+                    # Python calls ``__getattr__`` for what the object and its class lack: a
+                    # wrapper forwarding to the object it holds (``getattr(self._node, name)``).
+                    forward = self.class_attr(self.mro(atom.cls), "__getattr__", atom)
+                    if forward is not None:
+                        return self.call(forward, Args([atoms([Const.of(attr)])], {}, False), None)
                 if field_value.is_bottom and not self._all_user(atom.cls) and (
                         attr not in self.program.stored_attrs or isinstance(atom.cls, Extern)):
                     # Nothing here assigns it: the library's attribute. An instance of a

@@ -160,6 +160,8 @@ def message_facts(analysis: Analysis) -> MessageFacts:
                     facts.stores.append(FieldStore(_location(eff), obj.cls.qualname, path,
                                                    shapes(eff.arg("value"), analysis), False))
         elif eff.kind == GET_ATTRIBUTE:
+            if eff.arg("probed").consts() == [True]:
+                continue  # ``if hasattr(msg, 'header'): msg.header…``: judged on no path
             path = tuple((eff.arg("path").strings() or [""])[0].split("."))
             facts.reads.extend(FieldRead(_location(eff), obj.cls.qualname, path)
                                for obj in eff.arg("object")

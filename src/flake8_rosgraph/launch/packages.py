@@ -262,6 +262,18 @@ def _setup_py_scripts(path: Path, root: Path, notes: list[Diagnostic]) -> list[E
 
 
 def _setup_call_scripts(tree: ast.Module) -> list[Executable] | None:
+    points = setup_entry_points(tree)
+    if points is None:
+        return None
+    scripts = points.get("console_scripts", [])
+    if not isinstance(scripts, list) or not all(isinstance(s, str) for s in scripts):
+        return None
+    return [e for e in map(_entry, scripts) if e is not None]
+
+
+def setup_entry_points(tree: ast.Module) -> dict | None:
+    """The ``entry_points`` of ``setup(...)`` in ``setup.py``, folded statically: ``{}`` when it
+    has none, ``None`` when they cannot be read (``setup(**config)``, a computed value)."""
     folder = _Folder()
     for stmt in tree.body:
         if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
@@ -280,14 +292,9 @@ def _setup_call_scripts(tree: ast.Module) -> list[Executable] | None:
             if keyword.arg != "entry_points":
                 continue
             points = folder.value(keyword.value)
-            if not isinstance(points, dict):
-                return None
-            scripts = points.get("console_scripts", [])
-            if not isinstance(scripts, list) or not all(isinstance(s, str) for s in scripts):
-                return None
-            return [e for e in map(_entry, scripts) if e is not None]
-        return []
-    return []
+            return points if isinstance(points, dict) else None
+        return {}
+    return {}
 
 
 # -- CMakeLists.txt ---------------------------------------------------------------------------

@@ -86,7 +86,9 @@ class MessageField(Rule):
     different kinds (a message on one path, a tuple on another the analysis
     could not tell apart; messages of two types) is reported only when every
     one is rejected; an object that may be one of several message types, only
-    when none of them has the field. A keyword the class does not have
+    when none of them has the field. A field read in a function that tests
+    that attribute (`hasattr(msg, 'header')`, `getattr(msg, 'header', None)`)
+    is not judged. A keyword the class does not have
     is ignored silently when field checks are off, and is still reported.
 
     ## Example

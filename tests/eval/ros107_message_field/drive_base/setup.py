@@ -17,6 +17,7 @@ setup(
             'driver = drive_base.driver:main',
             'uploader = drive_base.uploader:main',
             'distro_driver = drive_base.distro_cmd:main',
+            'recorder = drive_base.stamps:main',
         ],
     },
 )

@@ -1,0 +1,132 @@
+"""Classes that frameworks instantiate, read from the packages' metadata, never from running them.
+
+Much rclpy code lives in classes no code of the workspace constructs: a ``ros2``
+command-line verb (``ros2cli.command``, ``ros2topic.verb`` … entry points), an rqt
+plugin (exported through ``plugin.xml``), a launch or test extension. The framework
+finds them by name in the package's metadata and builds them itself, so they are
+entry points of the analysis like ``console_scripts`` are:
+
+* every entry point group but ``console_scripts``/``gui_scripts`` of ``setup.py``
+  (read statically), ``setup.cfg`` and ``pyproject.toml`` (``[project.entry-points.*]``):
+  ``name = package.module:Class``;
+* every ``<class type="package.module.Class">`` of the plugin description files a
+  ``package.xml`` exports (``<rqt_gui plugin="${prefix}/plugin.xml"/>``); C++ classes
+  (``ns::Class``) are not Python and are left out.
+
+The result is a set of dotted ``module.Class`` names; a name that is no class of the
+workspace (a function, a missing module) is simply never matched.
+"""
+from __future__ import annotations
+
+import ast
+import configparser
+import re
+import sys
+import xml.parsers.expat
+from pathlib import Path
+
+from .launch.packages import package_xml_files, setup_entry_points
+from .launch.xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
+from .safe_io import is_regular_file, read_bytes, read_text
+
+#: Entry point groups that name executables, not classes a framework instantiates.
+SCRIPT_GROUPS = frozenset({"console_scripts", "gui_scripts"})
+#: ``plugin="${prefix}/plugin.xml"`` in a package.xml export.
+_EXPORTED_PLUGIN = re.compile(r"""\bplugin\s*=\s*["']\$\{prefix\}/([^"'$]+)["']""")
+_DOTTED = re.compile(r"^[A-Za-z_][\w.]*$")
+
+
+def registered_classes(root: Path) -> frozenset[str]:
+    """``module.Class`` of every class the packages under ``root`` register with a framework."""
+    found: set[str] = set()
+    for manifest in package_xml_files(root):
+        folder = manifest.parent
+        try:
+            found.update(_entry_point_targets(folder, root))
+            found.update(_plugin_classes(manifest, folder, root))
+        except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError):
+            continue  # metadata that cannot be read registers nothing; the package is still analysed
+    return frozenset(found)
+
+
+def _entry_point_targets(folder: Path, root: Path) -> list[str]:
+    groups: dict[str, list[str]] = {}
+    setup = folder / "setup.py"
+    if is_regular_file(setup):
+        try:
+            points = setup_entry_points(ast.parse(read_bytes(setup, root)))
+        except SyntaxError:
+            points = None
+        for group, entries in (points or {}).items():
+            if isinstance(group, str) and isinstance(entries, list):
+                groups.setdefault(group, []).extend(e for e in entries if isinstance(e, str))
+    cfg = folder / "setup.cfg"
+    if is_regular_file(cfg):
+        parser = configparser.ConfigParser(interpolation=None)
+        try:
+            parser.read_string(read_text(cfg, root))
+        except configparser.Error:
+            pass
+        else:
+            if parser.has_section("options.entry_points"):
+                for group, raw in parser.items("options.entry_points"):
+                    groups.setdefault(group, []).extend(raw.splitlines())
+    pyproject = folder / "pyproject.toml"
+    if is_regular_file(pyproject) and sys.version_info >= (3, 11):
+        import tomllib
+
+        try:
+            table = tomllib.loads(read_text(pyproject, root)).get("project", {}).get("entry-points", {})
+        except tomllib.TOMLDecodeError:
+            table = {}
+        for group, entries in table.items() if isinstance(table, dict) else ():
+            if isinstance(entries, dict):
+                groups.setdefault(group, []).extend(f"{k} = {v}" for k, v in entries.items() if isinstance(v, str))
+    return [target for group, entries in groups.items() if group not in SCRIPT_GROUPS
+            for target in map(_target, entries) if target is not None]
+
+
+def _target(entry: str) -> str | None:
+    """``package.module.Class`` of ``name = package.module:Class [extras]``."""
+    _, sep, value = entry.partition("=")
+    module, colon, attr = value.strip().partition(":")
+    attr = attr.strip().split()[0] if attr.strip() else ""
+    if not sep or not colon or not _DOTTED.match(module.strip()) or not _DOTTED.match(attr):
+        return None
+    return f"{module.strip()}.{attr}"
+
+
+def _plugin_classes(manifest: Path, folder: Path, root: Path) -> list[str]:
+    classes: list[str] = []
+    for relative in sorted(set(_EXPORTED_PLUGIN.findall(read_text(manifest, root)))):
+        description = (folder / relative).resolve()
+        if not is_regular_file(description) or not description.is_relative_to(folder.resolve()):
+            continue
+        classes.extend(_class_types(read_text(description, root)))
+    return classes
+
+
+def _class_types(text: str) -> list[str]:
+    """The Python ``type`` of every ``<class>`` in a plugin description file."""
+    types: list[str] = []
+    parser = safe_parser()
+    depth = [0]
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        depth[0] += 1
+        if depth[0] > MAX_XML_DEPTH:
+            raise XmlRefused(f"elements nested deeper than {MAX_XML_DEPTH}")
+        written = attrs.get("type", "")
+        if tag == "class" and "::" not in written and _DOTTED.match(written):
+            types.append(written)
+
+    def end(tag: str) -> None:
+        depth[0] -= 1
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    try:
+        parser.Parse(text, True)
+    except (xml.parsers.expat.ExpatError, XmlRefused):
+        return types
+    return types
