@@ -130,6 +130,18 @@ class PythonFront:
         if short == "TimerAction":
             return [GroupAction(at, self.entity_list(self.field(obj, "actions"), at), False,
                                 self.condition(obj))]
+        if short == "RegisterEventHandler":
+            # The handler's actions run when its event comes (a process exits, starts…): launched
+            # then, so conditional. A handler the stubs do not model is not followed.
+            actions: list[Action] = []
+            for handler in sorted(self.field(obj, "event_handler"), key=_order):
+                then = self.field(handler, "on_event") if isinstance(handler, Obj) else BOTTOM
+                if then.is_bottom:
+                    actions.append(Unsupported(at, f"an event handler the analysis does not model "
+                                                   f"({self.kind(handler).rsplit('.', 1)[-1] or '?'})"))
+                else:
+                    actions.extend(self.entity_list(then, at))
+            return [GroupAction(at, actions, False, Condition(Unknown("when the event comes")))]
         if short == "PushRosNamespace":
             return [PushNamespace(at, self.subst(self.field(obj, "namespace")))]
         if short == "SetRemap":
