@@ -161,9 +161,40 @@ class PythonFront:
         if short == "IncludeLaunchDescription":
             return [Include(at, self.source(self.field(obj, "launch_description_source")),
                             self.arguments(self.field(obj, "launch_arguments")), self.condition(obj))]
+        if short == "ExecuteProcess":
+            started = self.process_node(obj, at)
+            return [started] if started is not None else [Unsupported(at, "ExecuteProcess")]
         if short in _INERT and kind.split(".")[0] in ("launch", "launch_ros"):
             return []
         return [Unsupported(at, short or "an unknown launch entity")]
+
+    def process_node(self, obj: Obj, at: Location) -> NodeAction | None:
+        """The node an ``ExecuteProcess`` starts when its command is a package's executable:
+        ``[ExecutableInPackage(executable=…, package=…), …]`` or ``['ros2', 'run', pkg, exe, …]``,
+        with the ``--ros-args`` that follow read like a node's; ``None`` for any other program."""
+        command = [atom for atom in self.field(obj, "cmd") if isinstance(atom, Seq)]
+        if len(command) != 1 or not command[0].items:
+            return None
+        items = list(command[0].items)
+        made = [a for a in items[0] if isinstance(a, Record) and self.kind(a).endswith(".ExecutableInPackage")]
+        if len(made) == 1 and len(items[0].atoms or ()) == 1:
+            package, executable = made[0].field("package"), made[0].field("executable")
+            rest = items[1:]
+        elif [v.strings() for v in items[:2]] == [["ros2"], ["run"]] and len(items) >= 4:
+            package, executable = items[2], items[3]
+            rest = items[4:]
+        else:
+            return None
+        node = NodeAction(at, self.subst(package or BOTTOM), self.subst(executable or BOTTOM),
+                          condition=self.condition(obj))
+        words = [value.strings() for value in rest]
+        if ["--ros-args"] not in words:
+            return node
+        if any(len(w or ()) != 1 for w in words):
+            node.unresolved.append("ros_arguments: a --ros-args word the analysis cannot determine")
+            return node
+        _read_ros_args([w[0] for w in words][words.index(["--ros-args"]) + 1:], node, at)
+        return node
 
     def node(self, obj: Obj, at: Location, lifecycle: bool) -> NodeAction:
         def pick(*keys: str) -> Subst | None:
@@ -346,3 +377,43 @@ class PythonFront:
 def read_python_launch(analysis: Analysis, path: str) -> tuple[list[Action], str | None]:
     """The actions of the Python launch file at ``path`` (root-relative), or why there are none."""
     return PythonFront(analysis, path).actions()
+
+
+def _read_ros_args(words: list[str], node: NodeAction, at: Location) -> None:
+    """``-r from:=to`` (``__ns``/``__node`` set the namespace and name), ``-p name:=value`` and
+    ``--params-file FILE`` of a command line, into ``node``; anything else is noted unresolved."""
+    pairs = iter(words)
+    for flag in pairs:
+        if flag == "--":
+            return
+        value = next(pairs, None)
+        if value is None or flag not in ("-r", "--remap", "-p", "--param", "--params-file"):
+            node.unresolved.append(f"ros_arguments: '{flag}' is not interpreted")
+            continue
+        if flag == "--params-file":
+            node.param_files.append((Text(value), at))
+            continue
+        key, sep, target = value.partition(":=")
+        if not sep:
+            node.unresolved.append(f"ros_arguments: '{value}' is not a name:=value rule")
+        elif flag in ("-p", "--param"):
+            node.params.append((key, _scalar(target), at))
+        elif key == "__ns":
+            node.namespace = Text(target)
+        elif key in ("__node", "__name"):
+            node.name = Text(target)
+        else:
+            node.remaps.append((Text(key), Text(target), at))
+
+
+def _scalar(text: str) -> Any:
+    """A ``-p name:=value`` value as rcl reads it (YAML): a bool, an int, a float or a string."""
+    lowered = text.lower()
+    if lowered in ("true", "false"):
+        return lowered == "true"
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
