@@ -161,6 +161,8 @@ class PythonFront:
         if short == "IncludeLaunchDescription":
             return [Include(at, self.source(self.field(obj, "launch_description_source")),
                             self.arguments(self.field(obj, "launch_arguments")), self.condition(obj))]
+        if short in ("ComposableNodeContainer", "LoadComposableNodes"):
+            return self.components(obj, at)
         if short == "ExecuteProcess":
             started = self.process_node(obj, at)
             return [started] if started is not None else [Unsupported(at, "ExecuteProcess")]
@@ -197,30 +199,55 @@ class PythonFront:
         return node
 
     def node(self, obj: Obj, at: Location, lifecycle: bool) -> NodeAction:
+        return self.node_action(lambda key: self.field(obj, key), at, lifecycle, self.condition(obj))
+
+    def components(self, obj: Obj, at: Location) -> list[Action]:
+        """A container (itself a node) and the components it loads, or those ``LoadComposableNodes``
+        loads into one: each component is a node of its package, named and namespaced by its
+        description (a pushed namespace applies, the container's does not), with no executable."""
+        out: list[Action] = []
+        condition = self.condition(obj)
+        if self.kind(obj).endswith("ComposableNodeContainer"):
+            out.append(self.node(obj, at, False))
+        gaps = NodeAction(at, None, None)  # collects what the description list hides
+        for description in self.items(self.field(obj, "composable_node_descriptions"),
+                                      "composable_node_descriptions", gaps):
+            if isinstance(description, Record) and self.kind(description).endswith(".ComposableNode"):
+                component = self.node_action(lambda key: description.field(key) or BOTTOM, at, False,
+                                             condition)
+                component.executable = None
+                out.append(component)
+            else:
+                out.append(Unsupported(at, "a composable node description the analysis cannot determine"))
+        out.extend(Unsupported(at, gap) for gap in gaps.unresolved)
+        return out
+
+    def node_action(self, field: Any, at: Location, lifecycle: bool, condition: Condition | None) -> NodeAction:
+        """A node action from the fields ``field(key)`` of ``Node(...)`` or ``ComposableNode(...)``."""
         def pick(*keys: str) -> Subst | None:
             for key in keys:
-                value = self.field(obj, key)
+                value = field(key)
                 if value.consts() != [None] and not value.is_bottom:
                     return self.subst(value)
             return None
 
         node = NodeAction(at, pick("package"), pick("executable", "node_executable"),
                           pick("name", "node_name"), pick("namespace", "node_namespace"),
-                          condition=self.condition(obj), lifecycle=lifecycle)
-        remaps = self.field(obj, "remappings")
+                          condition=condition, lifecycle=lifecycle)
+        remaps = field("remappings")
         for pair in self.items(remaps, "remappings", node):
             if isinstance(pair, Seq) and len(pair.items) == 2:
                 node.remaps.append((self.subst(pair.items[0]), self.subst(pair.items[1]), at))
             else:
                 node.unresolved.append("remappings: an entry is not a (from, to) pair")
-        for entry in self.items(self.field(obj, "parameters"), "parameters", node):
+        for entry in self.items(field("parameters"), "parameters", node):
             if isinstance(entry, DictAtom):
                 self.inline_params(entry, "", node, at)
             elif isinstance(entry, Record) and self.kind(entry).endswith("ParameterFile"):
                 node.param_files.append((self.subst(entry.field("param_file") or BOTTOM), at))
             else:
                 node.param_files.append((self.subst(Value(frozenset([entry]))), at))
-        if self.ros_arguments(self.field(obj, "ros_arguments"), self.field(obj, "arguments")):
+        if self.ros_arguments(field("ros_arguments"), field("arguments")):
             node.unresolved.append("ros_arguments: --ros-args given on the command line are not interpreted")
         return node
 

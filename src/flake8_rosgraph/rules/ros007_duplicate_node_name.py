@@ -22,6 +22,9 @@ class DuplicateNodeName(Rule):
     both sites, each with the other as related location: the creation site
     in code, or the launch action when a launch file sets the node's name
     (so one executable launched twice under one name is reported too).
+    Nodes a launch file starts whose code is not in the workspace (components
+    loaded into a container, installed executables) are compared by the name
+    and namespace the launch file gives them.
 
     ## Why is this bad?
     ROS 2 does not enforce unique node names: both nodes start, but tools
@@ -75,6 +78,25 @@ class DuplicateNodeName(Rule):
         together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
         for fqn in sorted(groups):
             yield from self._duplicates(fqn, groups[fqn], together)
+        yield from sorted(set(self._launched_without_code(graph)))
+
+    def _launched_without_code(self, graph: RosGraph) -> Iterator[Finding]:
+        """Two nodes one launch file starts unconditionally under one name it gives in full,
+        neither tied to code of the workspace (components, installed executables): the code
+        pass above cannot see them, but the names alone clash."""
+        for system in graph.systems:
+            first: dict[str, Location] = {}
+            for launched in system.nodes:
+                if launched.target.status == "found" or launched.conditional or launched.name is None \
+                        or launched.namespace is None or launched.unresolved:
+                    continue
+                fqn = launched.namespace.rstrip("/") + "/" + launched.name
+                if fqn in first:
+                    yield Finding(launched.location, self.code,
+                                  f"node '{fqn}' is also started at {first[fqn].short()} by the same "
+                                  f"launch file {system.launch_file}", ((first[fqn], f"node '{fqn}'"),))
+                else:
+                    first[fqn] = launched.location
 
     def _duplicates(self, fqn: str, nodes: list[RosNode], together: _Together) -> Iterator[Finding]:
         # site -> partner site -> why they run together (the first reason found, in a fixed order)
