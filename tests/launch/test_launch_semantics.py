@@ -341,10 +341,10 @@ def test_a_launch_file_not_followed_completely_keeps_its_files_quiet(tmp_path, a
     launch = root / "src/drivers/launch/sensors.launch.py"
     launch.write_text(launch.read_text().replace(
         "    ])\n",
-        "        OpaqueFunction(function=lambda context: [Node(package='drivers', executable='pair',\n"
-        "                                                      parameters=[params])]),\n"
+        "        OpaqueFunction(function=pairs_for, kwargs={'params': params}),\n"
         "    ])\n").replace("from launch import LaunchDescription\n",
-                             "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction\n"))
+                             "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction\n"
+                             "from sensor_tools.launching import pairs_for  # not in the workspace\n"))
     assert findings(analyse_root, root, ("ROS205",)) == []
 
 

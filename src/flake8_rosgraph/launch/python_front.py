@@ -16,7 +16,7 @@ import re
 from typing import Any, Iterable
 
 from ..absint.engine import Analysis
-from ..absint.values import (BOTTOM, Coll, Const, DictAtom, Extern, Obj, Record, Seq, Value,
+from ..absint.values import (BOTTOM, Coll, Const, DictAtom, Extern, FuncAtom, Obj, Record, Seq, Value,
                              join_all)
 from ..graph.model import Location
 from .actions import (Action, Condition, DeclareArgument, GroupAction, Include, Join, NodeAction,
@@ -161,6 +161,8 @@ class PythonFront:
         if short == "IncludeLaunchDescription":
             return [Include(at, self.source(self.field(obj, "launch_description_source")),
                             self.arguments(self.field(obj, "launch_arguments")), self.condition(obj))]
+        if short == "OpaqueFunction":
+            return self.opaque(obj, at)
         if short in ("ComposableNodeContainer", "LoadComposableNodes"):
             return self.components(obj, at)
         if short == "ExecuteProcess":
@@ -200,6 +202,22 @@ class PythonFront:
 
     def node(self, obj: Obj, at: Location, lifecycle: bool) -> NodeAction:
         return self.node_action(lambda key: self.field(obj, key), at, lifecycle, self.condition(obj))
+
+    def opaque(self, obj: Obj, at: Location) -> list[Action]:
+        """The actions an ``OpaqueFunction``'s function returns, as the interpreter found them
+        (its launch context unknown: what it reads from it is unresolved); the function's own
+        ``args``/``kwargs`` are not bound."""
+        functions = self.field(obj, "function")
+        fids = {atom.fid for atom in functions if isinstance(atom, FuncAtom)}
+        if not fids or len(fids) != len(functions.atoms or ()):
+            return [Unsupported(at, "OpaqueFunction of a function the analysis cannot determine")]
+        returned = BOTTOM
+        for task in self.analysis.effects:
+            if task[0] == "fn" and task[1] in fids:
+                returned = returned.join(self.analysis.returns(task))
+        if returned.is_bottom:
+            return [Unsupported(at, "OpaqueFunction whose function returns no actions the analysis sees")]
+        return [GroupAction(at, self.entity_list(returned, at), False, self.condition(obj))]
 
     def components(self, obj: Obj, at: Location) -> list[Action]:
         """A container (itself a node) and the components it loads, or those ``LoadComposableNodes``

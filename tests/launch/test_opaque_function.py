@@ -1,0 +1,48 @@
+"""``OpaqueFunction``: the actions its function returns are launched; what it reads from the
+launch context at run time is unknown, so names built from it are unresolved, never guessed."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from flake8_rosgraph.analysis import build_graph
+
+LAUNCH = '''\
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from fleet_tools.launching import external_actions  # not in the workspace
+
+
+
+def robots(context):
+    return [Node(package='fleet', executable='agent', namespace='alpha'),
+            Node(package='fleet', executable='agent', namespace='beta')]
+
+
+def chosen(context, *args, **kwargs):
+    robot = LaunchConfiguration('robot').perform(context)
+    return [Node(package='fleet', executable='agent', namespace=robot)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        OpaqueFunction(function=robots),
+        OpaqueFunction(function=chosen),
+        OpaqueFunction(function=lambda context: print('starting')),  # returns None: launches nothing
+        OpaqueFunction(function=external_actions),
+    ])
+'''
+
+
+def test_actions_an_opaque_function_returns_are_launched(tmp_path: Path) -> None:
+    path = tmp_path / "src/fleet/launch/fleet.launch.py"
+    path.parent.mkdir(parents=True)
+    (tmp_path / "src/fleet/package.xml").write_text("<package format='3'><name>fleet</name></package>\n")
+    path.write_text(LAUNCH)
+    (system,) = build_graph(tmp_path).systems
+    launched = sorted((n.namespace or "?", bool(n.unresolved)) for n in system.nodes)
+    assert launched == [("/alpha", False), ("/beta", False), ("?", True)]
+    assert [p.message for p in system.problems] == [
+        "OpaqueFunction of a function the analysis cannot determine is not followed: nodes it starts "
+        "are not in the system"]
