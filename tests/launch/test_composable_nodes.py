@@ -6,9 +6,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.launch.api import judged_graph
 from flake8_rosgraph.rules import RuleConfig, run_rules
+from launch_workspace import one_system
 
 LAUNCH = '''\
 from launch import LaunchDescription
@@ -41,14 +41,10 @@ def generate_launch_description():
 
 
 def system(tmp_path: Path, second: str = "debayer", second_ns: str = "camera"):
-    path = tmp_path / "src/vision_bringup/launch/vision.launch.py"
-    path.parent.mkdir(parents=True)
-    (tmp_path / "src/vision_bringup/package.xml").write_text(
-        "<package format='3'><name>vision_bringup</name></package>\n")
-    path.write_text(LAUNCH.replace("{second}", second).replace("{second_ns}", second_ns))
-    graph = build_graph(tmp_path)
-    (found,) = graph.systems
-    return graph, found
+    return one_system(tmp_path, {
+        "src/vision_bringup/package.xml": "<package format='3'><name>vision_bringup</name></package>\n",
+        "src/vision_bringup/launch/vision.launch.py":
+            LAUNCH.replace("{second}", second).replace("{second_ns}", second_ns)})
 
 
 def test_containers_and_their_components_are_launched(tmp_path):

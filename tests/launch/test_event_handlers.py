@@ -7,9 +7,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.launch.api import judged_graph
 from flake8_rosgraph.rules import RuleConfig, run_rules
+from launch_workspace import one_system
 
 BRINGUP = '''\
 from launch import LaunchDescription
@@ -54,12 +54,7 @@ def bringup(tmp_path: Path, after_exit: str):
     files = {"src/arm/package.xml": "<package format='3'><name>arm</name></package>\n",
              "src/arm/setup.py": SETUP, "src/arm/arm/__init__.py": "", "src/arm/arm/tools.py": TOOLS,
              "src/arm/launch/bringup.launch.py": BRINGUP.replace("{after_exit}", after_exit)}
-    for rel, text in files.items():
-        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
-        (tmp_path / rel).write_text(text)
-    graph = build_graph(tmp_path)
-    (system,) = graph.systems
-    return graph, system
+    return one_system(tmp_path, files)
 
 
 def test_actions_of_event_handlers_are_launched_conditionally(tmp_path):

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.launch.api import judged_graph
 from flake8_rosgraph.rules import RuleConfig, run_rules
+from launch_workspace import one_system
 
 LAUNCH = '''\
 from launch import LaunchDescription
@@ -71,12 +71,7 @@ def demo(tmp_path: Path, listener: str = "listener", topic: str = "sensor_data")
              "src/monitor/setup.py": SETUP, "src/monitor/monitor/__init__.py": "",
              "src/monitor/monitor/nodes.py": NODES,
              "src/monitor/launch/demo.launch.py": LAUNCH.replace("{listener}", listener).replace("{topic}", topic)}
-    for rel, text in files.items():
-        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
-        (tmp_path / rel).write_text(text)
-    graph = build_graph(tmp_path)
-    (system,) = graph.systems
-    return graph, system
+    return one_system(tmp_path, files)
 
 
 def test_package_executables_run_as_processes_are_nodes(tmp_path):

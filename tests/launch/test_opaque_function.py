@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
+from launch_workspace import one_system
 
 LAUNCH = '''\
 from launch import LaunchDescription
@@ -36,11 +36,8 @@ def generate_launch_description():
 
 
 def test_actions_an_opaque_function_returns_are_launched(tmp_path: Path) -> None:
-    path = tmp_path / "src/fleet/launch/fleet.launch.py"
-    path.parent.mkdir(parents=True)
-    (tmp_path / "src/fleet/package.xml").write_text("<package format='3'><name>fleet</name></package>\n")
-    path.write_text(LAUNCH)
-    (system,) = build_graph(tmp_path).systems
+    _, system = one_system(tmp_path, {"src/fleet/package.xml": "<package format='3'><name>fleet</name></package>\n",
+                                      "src/fleet/launch/fleet.launch.py": LAUNCH})
     launched = sorted((n.namespace or "?", bool(n.unresolved)) for n in system.nodes)
     assert launched == [("/alpha", False), ("/beta", False), ("?", True)]
     assert [p.message for p in system.problems] == [
