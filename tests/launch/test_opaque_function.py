@@ -43,3 +43,31 @@ def test_actions_an_opaque_function_returns_are_launched(tmp_path: Path) -> None
     assert [p.message for p in system.problems] == [
         "OpaqueFunction of a function the analysis cannot determine is not followed: nodes it starts "
         "are not in the system"]
+
+
+BRANCHED = '''\
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def run_detector(context, use_tracking):
+    tracking = LaunchConfiguration(use_tracking).perform(context) == 'True'
+    detections = 'tracking' if tracking else 'detections'
+    return [Node(package='vision', executable='debug_node', name='debug_node', namespace='vision',
+                 remappings=[('image_raw', '/camera/image_raw'), ('detections', detections)])]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=run_detector, args=['use_tracking'])])
+'''
+
+
+def test_a_list_built_on_two_branches_is_joined_entry_by_entry(tmp_path: Path) -> None:
+    """The remap both branches agree on is applied once; the one they disagree on is unresolved."""
+    _, system = one_system(tmp_path, {"src/vision/package.xml": "<package format='3'><name>vision</name></package>\n",
+                                      "src/vision/launch/detect.launch.py": BRANCHED})
+    (node,) = system.nodes
+    assert [(r.source, r.target) for r in node.remaps] == [("image_raw", "/camera/image_raw")]
+    assert node.unresolved == ["remap: a value with several possible values"]

@@ -291,14 +291,21 @@ class PythonFront:
             node.unresolved.append(f"{what}: not known statically")
             return []
         out: list[Any] = []
+        lists = [atom for atom in value if isinstance(atom, Seq)]
+        if len({len(atom.items) for atom in lists}) > 1:
+            node.unresolved.append(f"{what}: one of several lists the analysis cannot choose between")
+            lists = []
+        # Alternatives of one list (built on two branches) are joined entry by entry, never
+        # concatenated: an entry that differs between them is not known statically.
+        for entry in (join_all(column) for column in zip(*(atom.items for atom in lists))):
+            if entry.is_top or len(list(entry)) != 1:
+                node.unresolved.append(f"{what}: an entry is not known statically")
+            else:
+                out.extend(entry)
         for atom in sorted(value, key=_order):
             if isinstance(atom, Seq):
-                for item in atom.items:
-                    if item.is_top or len(list(item)) != 1:
-                        node.unresolved.append(f"{what}: an entry is not known statically")
-                    else:
-                        out.extend(item)
-            elif isinstance(atom, Coll):
+                continue
+            if isinstance(atom, Coll):
                 node.unresolved.append(f"{what}: a list built at run time")
             else:
                 node.unresolved.append(f"{what}: not a list")
