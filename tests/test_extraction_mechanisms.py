@@ -534,8 +534,8 @@ def test_classes_frameworks_instantiate_are_entry_points(tmp_path: Path) -> None
     from flake8_rosgraph.registrations import registered_classes
 
     write(tmp_path, FRAMEWORK_PACKAGE)
-    assert registered_classes(tmp_path) == {"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb",
-                                            "robot_cli.monitor.BatteryMonitor"}
+    assert registered_classes(tmp_path) == ({"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb",
+                                             "robot_cli.monitor.BatteryMonitor"}, [])
     graph = build_graph(tmp_path)
     ends = {(n.fqn, e.kind, e.name) for n in graph.nodes for e in n.entities
             if e.kind in ("clients", "subscriptions")}
@@ -544,3 +544,30 @@ def test_classes_frameworks_instantiate_are_entry_points(tmp_path: Path) -> None
     # the topic the host passes is unknown: never the default '/battery_state'
     assert ("/battery_monitor", "subscriptions", None) in ends
     assert not any(name == "/battery_state" for _, _, name in ends)
+
+
+def test_hostile_framework_metadata_costs_only_its_registrations(tmp_path: Path) -> None:
+    """A plugin description that expands entities, nests without end or is not XML, and entry
+    points that are not ``module:Class``, register nothing; the package is still analysed and
+    the diagnostic names it."""
+    from flake8_rosgraph.registrations import registered_classes
+
+    files = dict(FRAMEWORK_PACKAGE)
+    files["robot_cli/plugin.xml"] = ('<!DOCTYPE l [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;">]>'
+                                     '<library><class type="robot_cli.monitor.BatteryMonitor">&b;</class></library>')
+    files["robot_cli/setup.py"] = files["robot_cli/setup.py"].replace(
+        "'robot_cli.verb': ['dock = robot_cli.verbs:DockVerb'],",
+        "'robot_cli.verb': ['dock = robot_cli.verbs:DockVerb', 'bad = not a target', 42],")
+    write(tmp_path, files)
+    registered, diagnostics = registered_classes(tmp_path)
+    # the entry points still count; the malformed ones and the refused plugin.xml do not
+    assert registered == {"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb"}
+    assert [(d.path, d.line) for d in diagnostics] == [("robot_cli/package.xml", 1)]
+    assert "DOCTYPE" in diagnostics[0].message
+    graph = build_graph(tmp_path)
+    assert any(d.path == "robot_cli/package.xml" and "framework" in d.message for d in graph.diagnostics)
+    deep = tmp_path / "deep"
+    write(deep, dict(FRAMEWORK_PACKAGE, **{"robot_cli/plugin.xml": "<a>" * 5000 + "</a>" * 5000}))
+    registered, diagnostics = registered_classes(deep)
+    assert registered == {"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb"}
+    assert ["nested deeper" in d.message for d in diagnostics] == [True]

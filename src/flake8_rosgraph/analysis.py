@@ -135,8 +135,9 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         workspace = load_workspace(root, buffers)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
-        analysis = Analysis(program, library,
-                            framework_classes=registered_classes(root) if root.is_dir() else frozenset())
+        registered, registry_diags = registered_classes(root) if root.is_dir() else (frozenset(), [])
+        diagnostics.extend(registry_diags)
+        analysis = Analysis(program, library, framework_classes=registered)
         analysis.run()
         diagnostics.extend(Diagnostic(m.path, 1, why) for m, why in program.rejected)
         diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)

@@ -25,9 +25,10 @@ import sys
 import xml.parsers.expat
 from pathlib import Path
 
+from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
 from .launch.xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
-from .safe_io import is_regular_file, read_bytes, read_text
+from .safe_io import describe, is_regular_file, read_bytes, read_text
 
 #: Entry point groups that name executables, not classes a framework instantiates.
 SCRIPT_GROUPS = frozenset({"console_scripts", "gui_scripts"})
@@ -36,17 +37,23 @@ _EXPORTED_PLUGIN = re.compile(r"""\bplugin\s*=\s*["']\$\{prefix\}/([^"'$]+)["']"
 _DOTTED = re.compile(r"^[A-Za-z_][\w.]*$")
 
 
-def registered_classes(root: Path) -> frozenset[str]:
-    """``module.Class`` of every class the packages under ``root`` register with a framework."""
+def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
+    """``module.Class`` of every class the packages under ``root`` register with a framework, and
+    a diagnostic per package whose metadata could not be read (it registers nothing then; its
+    code is still analysed)."""
     found: set[str] = set()
+    diagnostics: list[Diagnostic] = []
     for manifest in package_xml_files(root):
         folder = manifest.parent
         try:
             found.update(_entry_point_targets(folder, root))
             found.update(_plugin_classes(manifest, folder, root))
-        except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError):
-            continue  # metadata that cannot be read registers nothing; the package is still analysed
-    return frozenset(found)
+        except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError, XmlRefused,
+                xml.parsers.expat.ExpatError) as exc:
+            where = manifest.relative_to(root).as_posix() if manifest.is_relative_to(root) else manifest.name
+            diagnostics.append(Diagnostic(where, 1, "classes this package registers with a framework "
+                                                    f"(entry points, plugin.xml) are not known: {describe(exc)}"))
+    return frozenset(found), diagnostics
 
 
 def _entry_point_targets(folder: Path, root: Path) -> list[str]:
@@ -125,8 +132,5 @@ def _class_types(text: str) -> list[str]:
 
     parser.StartElementHandler = start
     parser.EndElementHandler = end
-    try:
-        parser.Parse(text, True)
-    except (xml.parsers.expat.ExpatError, XmlRefused):
-        return types
+    parser.Parse(text, True)
     return types
