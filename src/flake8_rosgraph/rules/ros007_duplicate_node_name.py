@@ -78,7 +78,10 @@ class DuplicateNodeName(Rule):
         together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
         for fqn in sorted(groups):
             yield from self._duplicates(fqn, groups[fqn], together)
-        yield from sorted(set(self._launched_without_code(graph)))
+        reported: dict[Location, Finding] = {}
+        for finding in self._launched_without_code(graph):  # an included file: its includers' too
+            reported.setdefault(finding.location, finding)
+        yield from (reported[location] for location in sorted(reported))
 
     def _launched_without_code(self, graph: RosGraph) -> Iterator[Finding]:
         """Two nodes one launch file starts unconditionally under one name it gives in full,
