@@ -571,3 +571,39 @@ def test_hostile_framework_metadata_costs_only_its_registrations(tmp_path: Path)
     registered, diagnostics = registered_classes(deep)
     assert registered == {"robot_cli.command.RobotCommand", "robot_cli.verbs.DockVerb"}
     assert ["nested deeper" in d.message for d in diagnostics] == [True]
+
+
+def test_cached_properties_are_read_like_properties(tmp_path: Path) -> None:
+    """``functools.cached_property`` getters run when read: the clients they create are found."""
+    write(tmp_path, {
+        "arm/package.xml": PACKAGE_XML.format(name="arm", build="ament_python"),
+        "arm/arm/__init__.py": "",
+        "arm/arm/client.py": """
+            from functools import cached_property
+
+            import rclpy
+            from rclpy.node import Node
+            from std_srvs.srv import Trigger
+
+
+            class ArmClient(Node):
+                def __init__(self):
+                    super().__init__('arm_client')
+
+                @cached_property
+                def _home(self):
+                    return self.create_client(Trigger, 'arm/home')
+
+                def go_home(self):
+                    return self._home.call_async(Trigger.Request())
+
+
+            def main():
+                rclpy.init()
+                client = ArmClient()
+                client.go_home()
+        """,
+    })
+    graph = build_graph(tmp_path)
+    assert {(n.fqn, e.name) for n in graph.nodes for e in n.entities if e.kind == "clients"} == \
+        {("/arm_client", "/arm/home")}

@@ -83,6 +83,8 @@ def _decorator_kind(node: ast.FunctionDef | ast.AsyncFunctionDef) -> str:
         name = dec.id if isinstance(dec, ast.Name) else getattr(dec, "attr", None)
         if name in ("staticmethod", "classmethod", "property"):
             return name
+        if name == "cached_property":  # functools': read like a property, computed once
+            return "property"
     return "function"
 
 
