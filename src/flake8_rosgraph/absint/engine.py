@@ -242,10 +242,14 @@ class Analysis:
 
     def context_index(self, fid: int, ctx: tuple) -> int:
         """A stable small number for a context of ``fid`` (its order of discovery), capped
-        at the contexts a function can have so that recursion through allocation (a
-        constructor that builds another instance of its class) makes finitely many objects."""
+        at :data:`MAX_CONTEXTS` so that recursion through allocation (a constructor that
+        builds another instance of its class) makes finitely many objects — except for a
+        context that passes code (a class to build, a function to run): objects built from
+        different classes must not share one site, so those keep their own number."""
         for index, known in enumerate(self.contexts.get(fid, ())):
             if known == ctx:
+                if index < MAX_CONTEXTS or not any(_is_code(value) for value in ctx):
+                    return min(index, MAX_CONTEXTS)
                 return min(index, MAX_CONTEXTS + MAX_CODE_CONTEXTS)
         return 0
 
