@@ -13,6 +13,9 @@ later run on unchanged code) reads that file.
   setup.cfg, CMakeLists.txt, launch/parameter files, C++ sources and headers,
   ``COLCON_IGNORE`` markers), read with the readers' own rules (:mod:`.safe_io`).
   Any change gives a new key, so a stale entry is never read; old entries are pruned.
+* **Reading less**: the digests of the workspace's files are kept by file identity
+  (size, times, inode) in ``inputs.json``, signed like the entries; an unchanged
+  file is not read again to compute the key (:class:`InputDigests`).
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
@@ -61,6 +64,11 @@ KEEP_ENTRIES = 16
 #: Largest entry written or read: with :data:`KEEP_ENTRIES`, what the cache may take on disk.
 MAX_ENTRY_BYTES = 16 * 1024 * 1024
 
+#: The digests of the workspace's inputs from earlier runs (see :class:`InputDigests`).
+INPUT_INDEX = "inputs.json"
+INPUT_INDEX_FORMAT = 1
+#: A file modified this recently may change again unnoticed within the clock's resolution.
+RACY_SECONDS = 2
 #: The only files the cache ever deletes: its entries, their locks, its own unfinished writes.
 _OWN_FILE = re.compile(r"^(?:[0-9a-f]{64}\.(?:json|lock)|\.tmp-[A-Za-z0-9_]+\.json)$")
 #: Written into a cache folder this tool created (or found empty); its presence marks the folder as ours.
@@ -143,8 +151,64 @@ def tool_fingerprint() -> str:
     return digest.hexdigest()
 
 
-def cache_key(root: Path, settings: Settings) -> str:
-    """The key of the analysis of ``root`` under ``settings`` (see module docstring)."""
+class InputDigests:
+    """Content digests of the workspace's files by file identity, kept between runs.
+
+    Hashing every input on every run costs a warm run more than the cache saves; a file
+    whose size, modification and change times and inode are what they were when it was
+    hashed has the same content, so its digest is reused. A file changed in the last
+    :data:`RACY_SECONDS` could change again within the clock's resolution unnoticed: its
+    digest is not remembered. The index is signed like the entries and ignored if not.
+    """
+
+    def __init__(self, known: dict[str, list[Any]] | None = None) -> None:
+        self.known = known or {}
+        self.seen: dict[str, list[Any]] = {}
+
+    def digest(self, path: Path, root: Path, rel: str) -> str:
+        try:
+            info = os.lstat(path)
+        except OSError:
+            return _input_digest(path, root)
+        identity = [info.st_size, info.st_mtime_ns, info.st_ctime_ns, info.st_ino]
+        remembered = self.known.get(rel)
+        if isinstance(remembered, list) and len(remembered) == 5 and remembered[:4] == identity \
+                and isinstance(remembered[4], str):
+            digest = remembered[4]
+        else:
+            digest = _input_digest(path, root)
+        settled = time.time_ns() - max(info.st_mtime_ns, info.st_ctime_ns) > RACY_SECONDS * 1_000_000_000
+        if settled and not digest.startswith(("refused:", "unreadable:")):
+            self.seen[rel] = identity + [digest]
+        return digest
+
+    @classmethod
+    def load(cls, cache_dir: Path, secret: bytes) -> InputDigests:
+        try:
+            obj = json.loads(read_bytes(cache_dir / INPUT_INDEX, cache_dir, MAX_ENTRY_BYTES).decode("utf-8"))
+            signature = obj.get("signature") if isinstance(obj, dict) else None
+            if isinstance(signature, str) and hmac.compare_digest(signature, _signature(secret, obj)) \
+                    and obj.get("format") == INPUT_INDEX_FORMAT and isinstance(obj.get("files"), dict):
+                return cls(obj["files"])
+        except (OSError, ValueError, TypeError, RecursionError):
+            pass  # missing, corrupt or foreign: every input is hashed
+        return cls()
+
+    def store(self, cache_dir: Path, secret: bytes) -> None:
+        """Write what this run learnt, when it differs from what was read (atomically)."""
+        if self.seen == self.known or not _own_dir(cache_dir):
+            return
+        obj: dict[str, Any] = {"format": INPUT_INDEX_FORMAT, "files": self.seen}
+        obj["signature"] = _signature(secret, obj)
+        text = json.dumps(obj, sort_keys=True, ensure_ascii=True)
+        if len(text) <= MAX_ENTRY_BYTES:
+            with contextlib.suppress(OSError):
+                _replace_with(cache_dir / INPUT_INDEX, text)
+
+
+def cache_key(root: Path, settings: Settings, digests: InputDigests | None = None) -> str:
+    """The key of the analysis of ``root`` under ``settings`` (see module docstring); ``digests``
+    spares reading the files that did not change since they were hashed."""
     digest = hashlib.sha256(f"rosgraph-cache/{ENTRY_FORMAT}\0{tool_fingerprint()}".encode())
     for stub in settings.stub_files:
         digest.update(_encoded(f"\0stub\0{stub.resolve().as_posix()}\0{_input_digest(stub, None)}"))
@@ -154,8 +218,10 @@ def cache_key(root: Path, settings: Settings) -> str:
         for path in workspace_inputs(folder) if folder.is_dir() else ():
             digest.update(_encoded(f"\0interface\0{path.resolve().as_posix()}\0{_input_digest(path, None)}"))
     base = root if root.is_dir() else root.parent
+    digests = digests or InputDigests()
     for path in workspace_inputs(root):
-        digest.update(_encoded(f"\0file\0{path.relative_to(base).as_posix()}\0{_input_digest(path, root)}"))
+        rel = path.relative_to(base).as_posix()
+        digest.update(_encoded(f"\0file\0{rel}\0{digests.digest(path, root, rel)}"))
     return digest.hexdigest()
 
 
@@ -360,12 +426,17 @@ def _write_entry(entry: Path, report: WorkspaceReport, key: str, secret: bytes) 
     text = json.dumps(obj, indent=1, sort_keys=True, ensure_ascii=True)
     if len(text) > MAX_ENTRY_BYTES:
         return  # kept in memory only: the cache stays bounded on disk
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".json", dir=entry.parent)
+    _replace_with(entry, text)
+
+
+def _replace_with(target: Path, text: str) -> None:
+    """Write ``text`` to a temporary file beside ``target`` and rename it over ``target``."""
+    fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".json", dir=target.parent)
     try:
         with os.fdopen(fd, "w", encoding="ascii") as handle:
             handle.write(text)
         os.chmod(tmp, 0o644)  # mkstemp makes it private; the workspace's other users share the cache
-        os.replace(tmp, entry)  # replaces a link at ``entry`` itself, never writes through it
+        os.replace(tmp, target)  # replaces a link at ``target`` itself, never writes through it
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
@@ -475,8 +546,11 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
     if secret is None or cache_dir is None:
         return build_report(root, settings)
-    key = cache_key(root, settings)
-    entry = Path(os.path.abspath(cache_dir)) / f"{key}.json"
+    cache_dir = Path(os.path.abspath(cache_dir))
+    digests = InputDigests.load(cache_dir, secret)
+    key = cache_key(root, settings, digests)
+    digests.store(cache_dir, secret)
+    entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
     if cached is not None:
         return cached

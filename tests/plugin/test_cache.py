@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import multiprocessing
 import os
+import time
 from pathlib import Path
 
 import pytest
@@ -139,3 +140,55 @@ def test_concurrent_processes_analyse_once(fake_engine: Path, workspace: Path) -
         worker.join(timeout=60)
     assert results == [RAW_STANDARD] * 4
     assert len(analyses(fake_engine)) == 1
+
+
+def _settle() -> None:
+    """Wait until the files just written are older than the racy window (their change time
+    cannot be set back), as files checked out a while ago are."""
+    time.sleep(cache.RACY_SECONDS + 0.2)
+
+
+def test_unchanged_files_are_not_read_again_for_the_key(fake_engine: Path, workspace: Path,
+                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    _settle()
+    first = cache.load_or_build(workspace, SETTINGS)
+    assert (workspace / cache.CACHE_DIR_NAME / cache.INPUT_INDEX).is_file()
+    hashed: list[Path] = []
+    real = cache._input_digest
+    monkeypatch.setattr(cache, "_input_digest", lambda path, root: hashed.append(path) or real(path, root))
+    cache.start_run()
+    assert cache.load_or_build(workspace, SETTINGS) == first
+    assert hashed == [] and len(analyses(fake_engine)) == 1
+    # An edit that keeps the size and puts the modification time back still changes ctime.
+    listener = workspace / "src/pkg_b/pkg_b/listener.py"
+    before = listener.stat()
+    listener.write_text(listener.read_text().replace("'nobody'", "'orphan'"))
+    os.utime(listener, ns=(before.st_atime_ns, before.st_mtime_ns))
+    rebuilt = cache.load_or_build(workspace, SETTINGS)
+    assert hashed == [listener] and len(analyses(fake_engine)) == 2
+    assert ("src/pkg_b/pkg_b/listener.py", 6, 10, "ROS003") in _found(rebuilt)
+
+
+@pytest.mark.parametrize("damage", ["{not json", "[]", '{"format": 1, "files": {}}'])
+def test_a_damaged_or_foreign_input_index_only_costs_reading(fake_engine: Path, workspace: Path,
+                                                               damage: str) -> None:
+    _settle()
+    key = cache.cache_key(workspace, SETTINGS)
+    cache.load_or_build(workspace, SETTINGS)
+    index = workspace / cache.CACHE_DIR_NAME / cache.INPUT_INDEX
+    forged = json.loads(index.read_text())
+    forged["files"] = {rel: [*identity[:4], "0" * 64] for rel, identity in forged["files"].items()}
+    for text in (damage, json.dumps(forged)):  # a forged digest is not signed by this user
+        index.write_text(text)
+        cache.start_run()
+        assert cache.cache_key(workspace, SETTINGS,
+                               cache.InputDigests.load(index.parent, cache.machine_secret())) == key
+
+
+def test_files_changed_just_now_are_not_remembered(workspace: Path) -> None:
+    digests = cache.InputDigests()
+    cache.cache_key(workspace, SETTINGS, digests)
+    assert digests.seen == {}  # all written a moment ago: their digests could go stale unnoticed
+    _settle()
+    cache.cache_key(workspace, SETTINGS, digests)
+    assert "src/pkg_a/pkg_a/talker.py" in digests.seen
