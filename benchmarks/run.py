@@ -20,10 +20,11 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 from dataclasses import asdict
 from pathlib import Path
 
-from flake8_rosgraph.cache import CACHE_DIR_NAME
+from flake8_rosgraph.cache import CACHE_DIR_NAME, RACY_SECONDS
 
 import growth
 import report
@@ -83,6 +84,9 @@ def main(argv: list[str] | None = None) -> int:
         work = Path(tmp)
         copy = shutil.copytree(args.dir, work / "ws", symlinks=True,
                                ignore=shutil.ignore_patterns(".git", CACHE_DIR_NAME))
+        # Files written a moment ago are hashed on every run (the cache's racy window); a
+        # checked-out workspace is older than that, so let the copy settle first.
+        time.sleep(RACY_SECONDS + 0.5)
         corpus = Corpus.scan(Path(copy))
         bench = WorkspaceBench(corpus)
         version, with_plugin = plugin_state(bench)
