@@ -11,14 +11,14 @@ import gc
 import traceback
 from importlib.resources import files
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
 from .escaping import escape_text
 from .graph.builder import build_graph_from
-from .graph.model import Diagnostic, RosGraph
+from .graph.model import Diagnostic, RosGraph, RosNode
 from .options import Buffers
 from .registrations import registered_classes
 from .safe_io import read_text
@@ -61,11 +61,15 @@ def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
         return []
 
 
-def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic]) -> None:
+#: Stores the C++ partner ends between runs: given how to read them, returns them (read or stored).
+CppMemo = Callable[[Callable[[], tuple[list[RosNode], list[Diagnostic]]]], tuple[list[RosNode], list[Diagnostic]]]
+
+
+def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo: CppMemo | None) -> None:
     """Add the workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
     from .cpp.to_graph import cpp_graph
     try:
-        nodes, cpp_diagnostics = cpp_graph(root)
+        nodes, cpp_diagnostics = memo(lambda: cpp_graph(root)) if memo is not None else cpp_graph(root)
     except Exception as exc:
         diagnostics.append(Diagnostic("", 0, f"C++ sources not read: internal error: "
                                               f"{type(exc).__name__}: {exc}", "error"))
@@ -108,13 +112,15 @@ def collector_paused():
 
 
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
-                interface_dirs: Sequence[Path] = (), buffers: Buffers = ()) -> RosGraph:
+                interface_dirs: Sequence[Path] = (), buffers: Buffers = (),
+                cpp_memo: CppMemo | None = None) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
-    ``buffers``: unsaved editor content that replaces files on disk."""
+    ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``: where the
+    C++ ends of an unchanged C++ tree are kept between runs (the cache)."""
     with collector_paused():
-        return _build_graph(Path(root), stub_files, interface_dirs, buffers)[0]
+        return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo)[0]
 
 
 def analyse(root: Path, stub_files: Sequence[Path] = (),
@@ -126,7 +132,7 @@ def analyse(root: Path, stub_files: Sequence[Path] = (),
 
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
-                 buffers: Buffers) -> tuple[RosGraph, Analysis | None]:
+                 buffers: Buffers, cpp_memo: CppMemo | None = None) -> tuple[RosGraph, Analysis | None]:
     analysis: Analysis | None = None
     diagnostics: list[Diagnostic] = []
     try:
@@ -144,7 +150,7 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
                            for d in analysis.diagnostics)
         graph = build_graph_from(analysis)
         diagnostics.extend(graph.diagnostics)
-        _cpp_nodes(root, graph, diagnostics)
+        _cpp_nodes(root, graph, diagnostics, cpp_memo)
         graph.systems = _launch_systems(root, graph, analysis, diagnostics)
         _interfaces(root, interface_dirs, graph, analysis, diagnostics)
         analysis.close()  # frees the analysis by reference counting, not a later collection

@@ -15,7 +15,9 @@ later run on unchanged code) reads that file.
   Any change gives a new key, so a stale entry is never read; old entries are pruned.
 * **Reading less**: the digests of the workspace's files are kept by file identity
   (size, times, inode) in ``inputs.json``, signed like the entries; an unchanged
-  file is not read again to compute the key (:class:`InputDigests`).
+  file is not read again to compute the key (:class:`InputDigests`). The C++ partner
+  ends are stored under a key of their own (the C++ files and package folders), so an
+  edit to Python code does not parse the C++ tree again (:func:`_cpp_memo`).
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
@@ -44,7 +46,7 @@ import time
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, Callable, Iterator
 
 from . import __version__
 from .cpp import CPP_SUFFIXES
@@ -164,6 +166,8 @@ class InputDigests:
     def __init__(self, known: dict[str, list[Any]] | None = None) -> None:
         self.known = known or {}
         self.seen: dict[str, list[Any]] = {}
+        #: The digest of every file this run keyed on, by root-relative path.
+        self.current: dict[str, str] = {}
 
     def digest(self, path: Path, root: Path, rel: str) -> str:
         try:
@@ -177,6 +181,7 @@ class InputDigests:
             digest = remembered[4]
         else:
             digest = _input_digest(path, root)
+        self.current[rel] = digest
         settled = time.time_ns() - max(info.st_mtime_ns, info.st_ctime_ns) > RACY_SECONDS * 1_000_000_000
         if settled and not digest.startswith(("refused:", "unreadable:")):
             self.seen[rel] = identity + [digest]
@@ -204,6 +209,61 @@ class InputDigests:
         if len(text) <= MAX_ENTRY_BYTES:
             with contextlib.suppress(OSError):
                 _replace_with(cache_dir / INPUT_INDEX, text)
+
+
+def _cpp_key(digests: InputDigests) -> str:
+    """The key of the C++ partner ends: the C++ files and the folders that make packages."""
+    from .cpp import memo as cpp_memo  # imported here: a warm run never needs the C++ front end
+    from .cpp.sources import IGNORE_MARKERS
+
+    digest = hashlib.sha256(f"rosgraph-cpp/{cpp_memo.MEMO_FORMAT}\0{tool_fingerprint()}\0"
+                            f"{_parser_versions()}".encode())
+    for rel in sorted(digests.current, key=_encoded):
+        name = rel.rsplit("/", 1)[-1]
+        if os.path.splitext(name)[1] in CPP_SUFFIXES or name == "package.xml" or name in IGNORE_MARKERS:
+            digest.update(_encoded(f"\0{rel}\0{digests.current[rel]}"))
+    return digest.hexdigest()
+
+
+@lru_cache(maxsize=1)
+def _parser_versions() -> str:
+    """The C++ parser's versions (its grammar decides what is read)."""
+    from importlib import metadata
+
+    versions = []
+    for dist in ("tree-sitter", "tree-sitter-cpp"):
+        try:
+            versions.append(f"{dist}={metadata.version(dist)}")
+        except metadata.PackageNotFoundError:
+            versions.append(f"{dist}=none")
+    return ",".join(versions)
+
+
+def _cpp_memo(cache_dir: Path, secret: bytes, key: str) -> Callable:
+    """A memo for :func:`.analysis.build_graph`: the C++ ends stored under ``key``, or read and stored."""
+    from .cpp import memo as cpp_memo
+
+    entry = cache_dir / f"{key}.json"
+
+    def memo(read: Callable[[], tuple[list, list[Diagnostic]]]) -> tuple[list, list[Diagnostic]]:
+        try:
+            obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
+            signature = obj.pop("signature", None) if isinstance(obj, dict) else None
+            if isinstance(signature, str) and obj.get("key") == key \
+                    and hmac.compare_digest(signature, _signature(secret, obj)):
+                return cpp_memo.from_obj(obj["ends"])
+        except (OSError, ValueError, KeyError, TypeError, RecursionError):
+            pass  # missing, corrupt or foreign: read the sources
+        found = read()
+        obj = {"key": key, "ends": cpp_memo.to_obj(*found)}
+        obj["signature"] = _signature(secret, obj)
+        text = json.dumps(obj, sort_keys=True, ensure_ascii=True)
+        if len(text) <= MAX_ENTRY_BYTES and _own_dir(cache_dir):
+            with contextlib.suppress(OSError):
+                _replace_with(entry, text)
+        return found
+
+    return memo
 
 
 def cache_key(root: Path, settings: Settings, digests: InputDigests | None = None) -> str:
@@ -516,14 +576,16 @@ else:
 
 # -- the analysis ----------------------------------------------------------------------------
 
-def build_report(root: Path, settings: Settings, buffers: Buffers = ()) -> WorkspaceReport:
-    """Analyse ``root`` and run every rule, uncached (imports the heavy parts only when needed)."""
+def build_report(root: Path, settings: Settings, buffers: Buffers = (),
+                 cpp_ends: Callable | None = None) -> WorkspaceReport:
+    """Analyse ``root`` and run every rule, uncached but for the C++ ends (``cpp_ends``, see
+    :func:`_cpp_memo`); imports the heavy parts only when needed."""
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
     from .launch.api import judged_graph
 
-    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers)
+    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers, cpp_ends)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
@@ -550,6 +612,7 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     digests = InputDigests.load(cache_dir, secret)
     key = cache_key(root, settings, digests)
     digests.store(cache_dir, secret)
+    cpp_ends = _cpp_memo(cache_dir, secret, _cpp_key(digests))
     entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
     if cached is not None:
@@ -565,7 +628,7 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
             cached = _read_entry(entry, root, key, secret)
             if cached is not None:
                 return cached
-        report = build_report(root, settings)
+        report = build_report(root, settings, cpp_ends=cpp_ends)
         if locked:
             with contextlib.suppress(OSError):
                 _write_entry(entry, report, key, secret)
