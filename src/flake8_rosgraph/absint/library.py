@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
-from typing import Any, Iterable
+from typing import Any, Callable, Iterable
 
 try:
     import tomllib
@@ -180,6 +180,11 @@ class LibraryModel:
     constants: dict[str, Value] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)
+    #: ``(__module__, __name__)`` of a library class the stubs do not list but whose names
+    #: follow a generator's convention (set by the caller that knows the convention);
+    #: ``None``: unknown. Code dispatching on these names then takes only its true branch.
+    class_identity: Callable[[str], tuple[str, str] | None] = field(
+        default=lambda qualname: None, repr=False)
     _canonical: dict[str, str] = field(default_factory=dict, repr=False)
     _mro: dict[str, list[str]] = field(default_factory=dict, repr=False)
 

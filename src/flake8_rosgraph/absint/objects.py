@@ -8,8 +8,12 @@ from __future__ import annotations
 
 
 from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
-                     ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms)
+                     ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
+                     const)
 from .calls import Args
+
+#: The attributes that name a class.
+_NAME_ATTRS = ("__module__", "__name__", "__qualname__")
 
 
 class ObjectSemantics:
@@ -33,6 +37,8 @@ class ObjectSemantics:
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
+                if attr == "__module__" and field_value.is_bottom and isinstance(atom.cls, Extern):
+                    return self._class_name_attr(atom.cls, attr)
                 if field_value.is_bottom and not attr.startswith("__"):
                     # Python calls ``__getattr__`` for what the object and its class lack: a
                     # wrapper forwarding to the object it holds (``getattr(self._node, name)``).
@@ -61,6 +67,8 @@ class ObjectSemantics:
         if isinstance(atom, ModuleAtom):
             return self.import_member(atom.name, attr)
         if isinstance(atom, Extern):
+            if attr in _NAME_ATTRS:
+                return self._class_name_attr(atom, attr)
             model = self.lib.classes.get(atom.qualname)
             if model is not None and self.lib.method(atom.qualname, attr):
                 return atoms([Extern(f"{atom.qualname}.{attr}")])
@@ -79,6 +87,15 @@ class ObjectSemantics:
         if isinstance(atom, (Seq, Coll, DictAtom)):
             return atoms([ExternBound(atom, "builtins.container." + attr)])
         return TOP
+
+    def _class_name_attr(self, cls: Extern, attr: str) -> Value:
+        """``__module__``/``__name__``/``__qualname__`` of a library class, where the library
+        knows them (code that dispatches on them then takes only the branch that runs)."""
+        identity = self.lib.class_identity(cls.qualname)
+        if identity is None:
+            return self.extern(f"{cls.qualname}.{attr}")
+        module, name = identity
+        return const(module if attr == "__module__" else name)
 
     def _all_user(self, cls: Atom) -> bool:
         return all(isinstance(c, ClassAtom) or c == Extern("builtins.object")
