@@ -220,7 +220,8 @@ class GraphBuilder:
                     if node is None:
                         node = self.nodes[key] = RosNode(
                             name, ns, location, _class_name(self.program, obj),
-                            conditional=eff.conditional, invalid=_node_problem(name, ns))
+                            conditional=eff.conditional, invalid=_node_problem(name, ns),
+                            local_overrides=cli.overrides)
                     if cli.remaps:
                         self.remaps[id(node)] = cli.remaps
                     known = self.by_object.setdefault(obj.site, [])
@@ -341,11 +342,21 @@ def resolve_name(raw: str | None, node: RosNode,
 
 @dataclass(frozen=True)
 class CommandLine:
-    """What a node's ``cli_args`` set: ``__node:=``/``__ns:=`` and remapping rules."""
+    """What a node's ``cli_args`` set: ``__node:=``/``__ns:=`` and remapping rules.
+
+    ``unsure``: a ``--ros-args`` word the analysis cannot read, which may set the name or the
+    namespace; either is then the node's own business, whatever a launch file says."""
 
     name: str | None = None
     namespace: str | None = None
     remaps: tuple[names.RemapRule, ...] = ()
+    unsure: bool = False
+
+    @property
+    def overrides(self) -> frozenset[str]:
+        """The node properties these arguments (may) set (``"name"``, ``"namespace"``)."""
+        return frozenset(k for k, v in (("name", self.name), ("namespace", self.namespace))
+                         if v is not None or self.unsure)
 
 
 #: ROS arguments that take a value which is not a remapping (skipped with it).
@@ -354,19 +365,23 @@ _VALUED_ROS_ARGS = frozenset({"-p", "--param", "--params-file", "--log-level", "
 
 
 def command_line(value: Value) -> CommandLine:
-    """The ``--ros-args`` of a node's ``cli_args``, when they are one list of known strings
-    (anything else changes nothing: an unknown list is almost always empty in practice, and
-    guessing would cost every name of the node)."""
+    """The ``--ros-args`` of a node's ``cli_args``, when they are one list (an unknown list
+    changes nothing: it is almost always empty in practice, and guessing would cost every
+    name of the node). A word it cannot read makes the rest :attr:`CommandLine.unsure`."""
     seqs = [a for a in value if isinstance(a, Seq)] if not value.is_top else []
     if len(seqs) != 1 or len(list(value)) != 1:
         return CommandLine()
     words = [item.strings() for item in seqs[0].items]
-    if any(w is None or len(w) != 1 for w in words):
-        return CommandLine()
     name = namespace = None
     remaps: list[names.RemapRule] = []
     inside, skip_next, rule_next = False, False, False
-    for (word,) in words:
+    for choices in words:
+        word = choices[0] if choices is not None and len(choices) == 1 else None
+        if word is None:
+            if inside and not skip_next:
+                return CommandLine(name, namespace, tuple(remaps), unsure=True)
+            skip_next = False
+            continue
         if word == "--ros-args":
             inside = True
         elif word == "--":

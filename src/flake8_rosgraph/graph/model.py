@@ -79,6 +79,10 @@ class RosNode:
     #: The language of the code that creates it: ``"python"`` (rclpy, analysed) or ``"cpp"``
     #: (rclcpp, read by :mod:`flake8_rosgraph.cpp` as a partner end for the Python rules).
     language: str = "python"
+    #: What the node's own ``cli_args`` set (``"name"``, ``"namespace"``): rcl reads a node's
+    #: local arguments before the process's, so a launch file's ``name``/``namespace`` do
+    #: not replace them.
+    local_overrides: frozenset[str] = frozenset()
 
     @property
     def fqn(self) -> str | None:

@@ -5,7 +5,8 @@ What ``--ros-args`` from launch do when the node starts (rcl ``node.c``,
 
 * ``__node:=`` (the launch ``name``) replaces the node name and ``__ns:=``
   (the launch namespace, pushed namespaces included) the namespace, for
-  every node the executable creates;
+  every node the executable creates — but for what a node's own ``cli_args``
+  set: rcl reads a node's local arguments first;
 * every topic/service/action name is expanded with the *new* name and
   namespace, then the remap rules are tried in order — the scope's
   ``SetRemap`` rules, then the node's own — on the fully expanded name, and
@@ -27,12 +28,16 @@ from .param_files import Section, YamlError, read_param_file
 
 
 def _node_name(launched: LaunchedNode, code: RosNode) -> str | None:
+    if "name" in code.local_overrides:
+        return code.name
     if launched.is_unresolved("name"):
         return None
     return launched.name if launched.name is not None else code.name
 
 
 def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
+    if "namespace" in code.local_overrides:
+        return code.namespace
     if launched.is_unresolved("namespace"):
         return None
     return launched.namespace if launched.namespace is not None else code.namespace
