@@ -119,6 +119,7 @@ class _Explainer:
         self.library = analysis.library
         self.callables = creation_callables(self.library)
         self._subclasses: dict[int, list[int]] | None = None
+        self._class_ids: dict[int, int] | None = None  # id(ClassDef) -> cid, built when needed
         self.effects: dict[tuple[str, int, int], list[Effect]] = {}
         for eff in analysis.all_effects():
             if eff.kind in CREATION_KINDS:
@@ -168,6 +169,8 @@ class _Explainer:
             return dotted, model
         if isinstance(func, ast.Attribute):
             if func.attr in self.callables.methods:
+                if self._own_method(func, klass):
+                    return None  # a wrapper of the workspace's own: the call inside it is the site
                 return _label(func), self._method_model(func.attr)
             if func.attr == "__init__" and klass is not None and _is_super_call(func.value, klass):
                 for base in klass.bases:
@@ -175,6 +178,24 @@ class _Explainer:
                     if qual and any(c in self.callables.constructors for c in self.library.mro(qual)):
                         return _label(func), self.library.method(qual, "__init__")
         return None
+
+    def _own_method(self, func: ast.Attribute, klass: ast.ClassDef | None) -> bool:
+        """Whether ``self.<name>`` in ``klass`` calls a method the workspace defines on the class
+        or a workspace base class (a plugin's ``create_client`` forwarding to its node's)."""
+        if klass is None or not isinstance(func.value, ast.Name) or func.value.id not in ("self", "cls"):
+            return False
+        if self._class_ids is None:
+            self._class_ids = {id(c.node): c.cid for c in self.program.classes}
+        todo, seen = [self._class_ids.get(id(klass))], set()
+        while todo:
+            cid = todo.pop()
+            if cid is None or cid in seen:
+                continue
+            seen.add(cid)
+            if func.attr in self.program.classes[cid].methods:
+                return True
+            todo.extend(analysed_user_bases(self.an.heap, cid))
+        return False
 
     def _in_workspace(self, dotted: str | None, imports: dict[str, str]) -> bool:
         head, _, _ = (dotted or "").partition(".")
