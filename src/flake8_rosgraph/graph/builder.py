@@ -353,10 +353,10 @@ class CommandLine:
     unsure: bool = False
 
     @property
-    def overrides(self) -> frozenset[str]:
+    def overrides(self) -> tuple[str, ...]:
         """The node properties these arguments (may) set (``"name"``, ``"namespace"``)."""
-        return frozenset(k for k, v in (("name", self.name), ("namespace", self.namespace))
-                         if v is not None or self.unsure)
+        return tuple(k for k, v in (("name", self.name), ("namespace", self.namespace))
+                     if v is not None or self.unsure)
 
 
 #: ROS arguments that take a value which is not a remapping (skipped with it).

@@ -82,7 +82,7 @@ class RosNode:
     #: What the node's own ``cli_args`` set (``"name"``, ``"namespace"``): rcl reads a node's
     #: local arguments before the process's, so a launch file's ``name``/``namespace`` do
     #: not replace them.
-    local_overrides: frozenset[str] = frozenset()
+    local_overrides: tuple[str, ...] = ()
 
     @property
     def fqn(self) -> str | None:
