@@ -254,9 +254,12 @@ class GraphBuilder:
             written = dict(eff.texts).get(name_arg)
             for raw in _choices(eff.arg(name_arg)):
                 name, problem = self._resolve(raw, node)
+                suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
+                    else None
                 out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
                                   callback=callback, invalid=problem,
-                                  via=via[0] if via else None, name_text=written, **common))
+                                  via=via[0] if via else None, name_text=written,
+                                  name_suffix=suffix, **common))
             return out
         if eff.kind == "timer":
             callback = self.callback_name(eff.arg("callback"))

@@ -60,6 +60,11 @@ class Entity:
     via: str | None = None      # library class that implies this entity (tf2_ros, parameter client)
     #: The name as written at the creating call (``prefix + '/scan'``), to say what could not be resolved.
     name_text: str | None = None
+    #: For an unknown ``name``: how it ends when only what rcl puts in front is unknown (the
+    #: namespace of a relative name, the node of a private one) and no remap can change it —
+    #: ``'/amcl_pose'`` for ``'amcl_pose'`` on a node of unknown namespace. An unknown with a
+    #: known end can only be the other end of names that end so.
+    name_suffix: str | None = None
 
 
 @dataclass

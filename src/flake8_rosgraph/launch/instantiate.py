@@ -43,6 +43,20 @@ def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
     return launched.namespace if launched.namespace is not None else code.namespace
 
 
+def _launched_suffix(entity: Entity, resolved: str | None, rules: list[names.RemapRule],
+                     launched: LaunchedNode) -> str | None:
+    """The known end of a launched entity's unknown name (:attr:`Entity.name_suffix`): none
+    when a launch remap may apply (remaps match the expanded name, unknown here), nor when
+    the code's own remaps changed it (its code-level name does not end so)."""
+    if resolved is not None or rules or launched.is_unresolved("remap"):
+        return None
+    suffix = names.known_suffix(entity.raw_name)
+    if suffix is None or (entity.name is None and entity.name_suffix != suffix) or (
+            entity.name is not None and not entity.name.endswith(suffix)):
+        return None
+    return suffix
+
+
 def launch_info(launched: LaunchedNode) -> dict[str, Any]:
     """The ``"launch"`` object of a node in the graph JSON."""
     return {"file": launched.launch_file, "line": launched.location.line,
@@ -112,7 +126,9 @@ class Instantiator:
                 before, _ = names.expand_topic_name(entity.raw_name, name, namespace)
                 expanded.add(before or resolved)
             known = known and resolved is not None
-            entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid))
+            suffix = _launched_suffix(entity, resolved, rules, launched)
+            entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid,
+                                    name_suffix=suffix))
         node = RosNode(name, namespace, code.location, code.cls,
                        conditional=code.conditional or launched.conditional,
                        invalid=code.invalid, entities=entities, language=code.language)
