@@ -16,7 +16,7 @@ from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
-                             Seq, Coll, Value)
+                             Seq, Coll, Value, wrapped)
 from . import names
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .usage import build_usage
@@ -302,7 +302,7 @@ class GraphBuilder:
 
     def callback_name(self, value: Value) -> str | None:
         found = []
-        for atom in value:
+        for atom in map(wrapped, value):
             if isinstance(atom, (FuncAtom, BoundMethod)):
                 found.append(self.program.functions[atom.fid].qualname)
             elif isinstance(atom, ExternBound):
