@@ -33,7 +33,7 @@ SHIPPED_NAMES = [name for name, _ in SHIPPED]
 #: The arguments the graph builder reads, per effect kind (docs/stubs.md, "Effects").
 EFFECT_ARGS: dict[str, frozenset[str]] = {
     "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare",
-                        "cli_args"}),
+                        "cli_args", "context", "use_global_arguments"}),
     "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
     "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
@@ -53,7 +53,7 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),
     "rate": frozenset({"node", "frequency", "object"}),
-    "context_init": frozenset({"context"}),
+    "context_init": frozenset({"context", "args"}),
     "context_shutdown": frozenset({"context"}),
     "node_destroy": frozenset({"node"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
@@ -138,6 +138,9 @@ def _model_problems(model: FunctionModel) -> list[str]:
         problems += _ref_problems(store.value, params, f"{at}.value", allow_return=True)
     if model.returns.how == "ref":
         problems += _ref_problems(model.returns.data, params, f"{where}.returns",
+                                  allow_return=False)
+    if model.returns.how == "partial":
+        problems += _ref_problems(Ref("arg", model.returns.data), params, f"{where}.returns",
                                   allow_return=False)
     for name, ref in model.returns.fields:
         problems += _ref_problems(ref, params, f"{where}.returns.{name}", allow_return=False)
