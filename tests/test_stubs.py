@@ -35,7 +35,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare",
                         "cli_args", "context", "use_global_arguments"}),
     "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
-    "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
+    "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via",
+                               "when_true", "in_parameters"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
     "client": frozenset({"node", "name", "type", "via", "object", "group"}),
     "action_server": frozenset({"node", "name", "type", "callback", "via"}),
@@ -217,8 +218,9 @@ def test_shipped_bases_and_via_classes_are_modelled():
                 if not vias:
                     problems.append(f"{model.qualname}: via must be a const string")
                     continue
-                problems += [f"{model.qualname}: via {v!r} is not a modelled class"
-                             for v in vias if library.canonical(v) not in library.classes]
+                problems += [f"{model.qualname}: via {v!r} is not a modelled class or function"
+                             for v in vias if library.canonical(v) not in library.classes
+                             and library.canonical(v) not in library.functions]
     assert problems == []
 
 

@@ -18,6 +18,7 @@ from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
                              Seq, Coll, Value, wrapped)
 from . import names
+from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .usage import build_usage
@@ -245,6 +246,8 @@ class GraphBuilder:
     def _entities(self, eff: Effect, node: RosNode) -> list[Entity]:
         location = Location(eff.path, eff.line, eff.column)
         common = dict(location=location, conditional=eff.conditional)
+        if switched_off(eff):
+            return []
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
             type_ = interface_type(eff.arg("type"))
