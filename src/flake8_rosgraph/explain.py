@@ -27,6 +27,7 @@ from .absint.objects import analysed_user_bases
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS
 from .graph.model import RosGraph
+from .graph.parameter_switches import switched_off
 
 #: Effect kinds that put something in the graph a user looks for (parameters are listed
 #: by their own declarations and are not creation sites).
@@ -122,7 +123,7 @@ class _Explainer:
         self._class_ids: dict[int, int] | None = None  # id(ClassDef) -> cid, built when needed
         self.effects: dict[tuple[str, int, int], list[Effect]] = {}
         for eff in analysis.all_effects():
-            if eff.kind in CREATION_KINDS:
+            if eff.kind in CREATION_KINDS and not switched_off(eff):
                 self.effects.setdefault((eff.path, eff.line, eff.column), []).append(eff)
         self.graph_nodes: dict[tuple, list] = {}
         self.graph_entities: dict[tuple, list] = {}

@@ -21,7 +21,7 @@ from .library import FunctionModel, Ref, ReturnSpec
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
-                     Extern, ExternBound, FuncAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
+                     Extern, ExternBound, FuncAtom, Obj, Partial, Record, Seq, SuperAtom, Value, atoms,
                      const, join_all, soften)
 
 
@@ -61,7 +61,7 @@ class CallSemantics:
         """Callables passed to unknown code may be called by it: analyse them as entries."""
         for value in list(args.pos) + list(args.kw.values()):
             for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod)):
+                if isinstance(atom, (FuncAtom, BoundMethod, Partial)):
                     self.schedule_callback(atom)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
@@ -75,6 +75,8 @@ class CallSemantics:
             return self.call_extern(atom.qualname, args, node)
         if isinstance(atom, ExternBound):
             return self.call_bound_extern(atom, args, node)
+        if isinstance(atom, Partial):
+            return self._call_atom(atom.func, _applied(atom, args), node)
         return TOP
 
     # -- user code ----------------------------------------------------------------------------
@@ -171,11 +173,21 @@ class CallSemantics:
         return frame.cls is None and frame.block not in frame.dominators
 
     def schedule_callback(self, atom: Atom) -> None:
-        if isinstance(atom, FuncAtom):
-            self.an.schedule(self.an.function_task(atom.fid, self.default_context(atom.fid, None)))
-        elif isinstance(atom, BoundMethod):
-            self.an.schedule(self.an.function_task(
-                atom.fid, self.default_context(atom.fid, atom.receiver)))
+        """Analyse a callable that the library (or unknown code) calls later, as an entry:
+        its parameters take their defaults, or unknown values where the caller passes them;
+        a partial's bound arguments fill the parameters they bind."""
+        bound = Args([], {}, False)
+        while isinstance(atom, Partial):
+            bound = _applied(atom, bound)
+            atom = atom.func
+        if not isinstance(atom, (FuncAtom, BoundMethod)):
+            return
+        receiver = atom.receiver if isinstance(atom, BoundMethod) else None
+        ctx = self.bind_user(self.program.functions[atom.fid], receiver, bound) \
+            if bound.pos or bound.kw or bound.star else None
+        if ctx is None:
+            ctx = self.default_context(atom.fid, receiver)
+        self.an.schedule(self.an.function_task(atom.fid, ctx))
 
     def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
         obj = Obj(self._site(node), cls)
@@ -306,10 +318,10 @@ class CallSemantics:
             bound[param.name] = value
         extra = pos[len(positional):]
         for param in params:
-            if param.kind == "varargs":
-                bound[param.name] = atoms([Seq("tuple", tuple(extra))])
+            if param.kind == "varargs":  # unknown when ``*seq`` may have added to it
+                bound[param.name] = TOP if args.star else atoms([Seq("tuple", tuple(extra))])
             elif param.kind == "varkw":
-                bound[param.name] = atoms([DictAtom(tuple(
+                bound[param.name] = TOP if args.star else atoms([DictAtom(tuple(
                     (const(k), v) for k, v in sorted(args.kw.items())))])
             elif param.name in args.kw:
                 bound[param.name] = args.kw[param.name]
@@ -377,6 +389,8 @@ class CallSemantics:
             return atoms([Record(spec.data, fields)])
         if spec.how == "ref":
             return self.ref(spec.data, bound, receiver)
+        if spec.how == "partial":
+            return _partial(bound.get(spec.data, TOP), {k: self.ref(r, bound, receiver) for k, r in spec.fields})
         return TOP
 
     def ref(self, ref: Ref, bound: dict, receiver: Atom | None) -> Value:
@@ -608,6 +622,42 @@ class Args:
     pos: list
     kw: dict
     star: bool
+
+
+def _partial(func: Value, given: dict[str, Value]) -> Value:
+    """Each callable of ``func`` with the positional arguments of the sequence ``args`` and
+    the keywords of the mapping ``keywords`` bound in front. Arguments that are not a known
+    sequence, or a mapping with string keys, leave every later position unknown: a value
+    is never shifted onto the wrong parameter."""
+    if func.is_top:
+        return TOP
+    args = given.get("args", atoms([Seq("tuple", ())]))
+    keywords = given.get("keywords", atoms([DictAtom(())]))
+    bindings = []
+    for seq in [None] if args.is_top else args:
+        for mapping in [None] if keywords.is_top else keywords:
+            kw = _string_keys(mapping) if isinstance(mapping, DictAtom) else None
+            known = isinstance(seq, Seq) and kw is not None
+            bindings.append((seq.items if isinstance(seq, Seq) else (), kw or (), not known))
+    return atoms(Partial(target, pos, kw, star) for target in func for pos, kw, star in bindings)
+
+
+def _string_keys(mapping: DictAtom) -> tuple[tuple[str, Value], ...] | None:
+    """A dict's items keyed by their single string keys; ``None`` if a key is not one string."""
+    out = []
+    for key, value in mapping.items:
+        names = key.strings()
+        if names is None or len(names) != 1:
+            return None
+        out.append((names[0], value))
+    return tuple(sorted(out, key=lambda kv: kv[0]))
+
+
+def _applied(partial: Partial, args: Args) -> Args:
+    """The arguments a call of ``partial`` with ``args`` passes to what it wraps: the bound
+    positionals first, the caller's keywords over the bound ones (as ``functools.partial``)."""
+    pos = list(partial.args) + ([] if partial.star else list(args.pos))
+    return Args(pos, {**dict(partial.kw), **args.kw}, partial.star or args.star)
 
 
 def _raise():

@@ -141,7 +141,9 @@ class StoreSpec:
 @dataclass(frozen=True)
 class ReturnSpec:
     """``how``: "instance" (new object of class ``data``), "record" (a record of class
-    ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), or "unknown"."""
+    ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), "partial" (the callable
+    in parameter ``data`` with the arguments of the parameters named in ``fields`` —
+    ``args``: a sequence, ``keywords``: a mapping — bound in front), or "unknown"."""
 
     how: str
     data: Any = None
@@ -296,6 +298,14 @@ def _returns(raw: Any, where: str) -> ReturnSpec:
     if isinstance(raw, str):
         return ReturnSpec("instance", raw)
     raw = _table(raw, where)
+    if "partial" in raw:
+        unknown = set(raw) - {"partial", "args", "keywords"}
+        if unknown:
+            raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
+        if not all(isinstance(v, str) for v in raw.values()):
+            raise StubError(f"{where}: partial, args and keywords name parameters")
+        return ReturnSpec("partial", raw["partial"],
+                          tuple(sorted((k, Ref("arg", raw[k])) for k in ("args", "keywords") if k in raw)))
     if "record" in raw:
         unknown = set(raw) - {"record", "fields"}
         if unknown:

@@ -121,6 +121,9 @@ class Program:
         #: Attribute names some workspace code assigns (``x.name = …``): any other attribute
         #: of an object with library bases can only come from the library.
         self.stored_attrs: set[str] = set()
+        #: Names and attribute names some workspace code reads (``run``, ``helpers.run``):
+        #: a module function named so may be called by code that is analysed later.
+        self.read_names: set[str] = set()
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
@@ -203,8 +206,10 @@ class Program:
             else:
                 if isinstance(node, ast.Name):
                     (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
-                elif isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
-                    self.stored_attrs.add(node.attr)
+                    if isinstance(node.ctx, ast.Load):
+                        self.read_names.add(node.id)
+                elif isinstance(node, ast.Attribute):
+                    (self.read_names if isinstance(node.ctx, ast.Load) else self.stored_attrs).add(node.attr)
                 elif isinstance(node, ast.alias):
                     if node.name != "*":
                         scope.bound.add((node.asname or node.name).split(".")[0])

@@ -16,8 +16,10 @@ from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
-                             Seq, Coll, Value)
+                             Seq, Coll, Value, wrapped)
 from . import names
+from .parameter_switches import switched_off
+from .ros_args import CommandLine, command_line, process_command_lines, with_process
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .usage import build_usage
 
@@ -161,9 +163,11 @@ class GraphBuilder:
         self.nodes: dict[tuple, RosNode] = {}          # (location, name, namespace) -> node
         self.by_object: dict[str, list[RosNode]] = {}  # allocation site -> nodes it may be
         self.remaps: dict[int, tuple[names.RemapRule, ...]] = {}  # id(node) -> its cli_args rules
+        self.process_args: dict[Effect, CommandLine] = {}  # node effect -> its rclpy.init arguments
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
+        self.process_args = process_command_lines(self.analysis)
         for eff in effects:
             if eff.kind == "node":
                 self._add_node(eff)
@@ -204,7 +208,7 @@ class GraphBuilder:
         else:
             ns_choices = [None if ns is None else names.normalize_namespace(ns)
                           for ns in _choices(namespaces)]
-        cli = command_line(eff.arg("cli_args"))
+        cli = with_process(command_line(eff.arg("cli_args")), self.process_args.get(eff))
         name_choices = _choices(eff.arg("name"))
         if cli.name is not None:
             name_choices = [cli.name]
@@ -242,6 +246,8 @@ class GraphBuilder:
     def _entities(self, eff: Effect, node: RosNode) -> list[Entity]:
         location = Location(eff.path, eff.line, eff.column)
         common = dict(location=location, conditional=eff.conditional)
+        if switched_off(eff):
+            return []
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
             type_ = interface_type(eff.arg("type"))
@@ -302,7 +308,7 @@ class GraphBuilder:
 
     def callback_name(self, value: Value) -> str | None:
         found = []
-        for atom in value:
+        for atom in map(wrapped, value):
             if isinstance(atom, (FuncAtom, BoundMethod)):
                 found.append(self.program.functions[atom.fid].qualname)
             elif isinstance(atom, ExternBound):
@@ -341,73 +347,6 @@ def resolve_name(raw: str | None, node: RosNode,
         if expanded is None:
             return rule.replacement, check.reason
     return expanded, None if check.ok else check.reason
-
-
-@dataclass(frozen=True)
-class CommandLine:
-    """What a node's ``cli_args`` set: ``__node:=``/``__ns:=`` and remapping rules.
-
-    ``unsure``: a ``--ros-args`` word the analysis cannot read, which may set the name or the
-    namespace; either is then the node's own business, whatever a launch file says."""
-
-    name: str | None = None
-    namespace: str | None = None
-    remaps: tuple[names.RemapRule, ...] = ()
-    unsure: bool = False
-
-    @property
-    def overrides(self) -> tuple[str, ...]:
-        """The node properties these arguments (may) set (``"name"``, ``"namespace"``)."""
-        return tuple(k for k, v in (("name", self.name), ("namespace", self.namespace))
-                     if v is not None or self.unsure)
-
-
-#: ROS arguments that take a value which is not a remapping (skipped with it).
-_VALUED_ROS_ARGS = frozenset({"-p", "--param", "--params-file", "--log-level", "-e", "--enclave",
-                              "--log-config-file"})
-
-
-def command_line(value: Value) -> CommandLine:
-    """The ``--ros-args`` of a node's ``cli_args``, when they are one list (an unknown list
-    changes nothing: it is almost always empty in practice, and guessing would cost every
-    name of the node). A word it cannot read makes the rest :attr:`CommandLine.unsure`."""
-    seqs = [a for a in value if isinstance(a, Seq)] if not value.is_top else []
-    if len(seqs) != 1 or len(list(value)) != 1:
-        return CommandLine()
-    words = [item.strings() for item in seqs[0].items]
-    name = namespace = None
-    remaps: list[names.RemapRule] = []
-    inside, skip_next, rule_next = False, False, False
-    for choices in words:
-        word = choices[0] if choices is not None and len(choices) == 1 else None
-        if word is None:
-            if inside and not skip_next:
-                return CommandLine(name, namespace, tuple(remaps), unsure=True)
-            skip_next = False
-            continue
-        if word == "--ros-args":
-            inside = True
-        elif word == "--":
-            inside = False
-        elif not inside:
-            continue
-        elif skip_next:
-            skip_next = False
-        elif word in ("-r", "--remap"):
-            rule_next = True
-        elif word in _VALUED_ROS_ARGS:
-            skip_next = True
-        elif rule_next and ":=" in word:
-            rule_next = False
-            source, _, target = word.partition(":=")
-            node, _, source = source.rpartition(":") if ":" in source else (None, "", source)
-            if source == "__ns" and not node:
-                namespace = target
-            elif source in ("__node", "__name") and not node:
-                name = target
-            else:
-                remaps.append(names.RemapRule(source, target, node or None))
-    return CommandLine(name, namespace, tuple(remaps))
 
 
 def _class_name(program, obj: Obj) -> str | None:
