@@ -17,7 +17,7 @@ from .callgraph import CallSite
 from .engine import Effect
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
-from .library import FunctionModel, Ref, ReturnSpec
+from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
@@ -294,7 +294,26 @@ class CallSemantics:
         if model is None:
             self._escape(args)
             return TOP
-        return self.apply_model(model, atom.receiver, args, node)
+        receiver = atom.receiver
+        if isinstance(receiver, Obj) and Extern(owner) not in self.mro(receiver.cls):
+            return self._call_stand_in(model, owner, receiver, args, node)
+        return self.apply_model(model, receiver, args, node)
+
+    def _call_stand_in(self, model: FunctionModel, owner: str, receiver: Obj, args: "Args",
+                       node) -> Value:
+        """A method the receiver's unresolved base class may provide, modelled by a stand-in
+        (:class:`~.library.StandIn`): the model's effects when the call has its shape, each
+        marked with the base class (``unresolved_base``) so that consumers know the object is
+        only presumed to be what the model describes; otherwise an unknown call."""
+        name = model.qualname.rpartition(".")[2]
+        declared = self.lib.classes.get(owner)
+        spec = declared.stand_in_for_unresolved.get(name) if declared is not None else None
+        base = self.unresolved_base(receiver.cls)
+        if spec is None or base is None or not _has_shape(model, spec, args):
+            self._escape(args)
+            return TOP
+        return self.apply_model(model, receiver, args, node,
+                                marks=(("unresolved_base", const(base)),))
 
     def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args") -> dict:
         """Arguments of a library call by parameter name (⊥ arguments count as unknown)."""
@@ -338,7 +357,10 @@ class CallSemantics:
             out[name] = text if len(text) <= 80 else text[:77] + "..."
         return out
 
-    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node) -> Value:
+    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node,
+                    marks: tuple[tuple[str, Value], ...] = ()) -> Value:
+        """Bind, compute the return value, record the effects (with ``marks`` appended to
+        each one's arguments), perform the stores and schedule the callbacks of a library call."""
         bound = self.bind_model(model, receiver, args)
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
@@ -346,7 +368,7 @@ class CallSemantics:
         recorded = []
         written = self.argument_texts(model, receiver, node) if model.effects else {}
         for index, spec in enumerate(model.effects):
-            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
+            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args
                           if ref.how == "arg" and ref.data in written)
             key = (id(node), model.qualname, index, receiver)
@@ -558,6 +580,50 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _has_shape(model: FunctionModel, spec: StandIn, args: "Args") -> bool:
+    """Whether a call (without its receiver) binds to ``model``'s parameters exactly as Python
+    would (no unpacking, no missing or surplus argument, no keyword the method lacks) and
+    gives the parameters ``spec`` names arguments of their kinds."""
+    if args.star:
+        return False
+    params = model.signature.params[1:]  # the receiver is ``self``
+    positional = [p for p in params if p.kind == "pos"]
+    named = {p.name for p in params if p.kind in ("pos", "kwonly")}
+    if len(args.pos) > len(positional) and not any(p.kind == "varargs" for p in params):
+        return False
+    given = {p.name: v for p, v in zip(positional, args.pos)}
+    for key, value in args.kw.items():
+        if key in given or (key not in named and not any(p.kind == "varkw" for p in params)):
+            return False
+        given[key] = value
+    if any(p.default is None and p.kind in ("pos", "kwonly") and p.name not in given
+           for p in params):
+        return False
+    return all(_of_kind(given.get(param), kind) for param, kind in spec.kinds)
+
+
+def _of_kind(value: Value | None, kind: str) -> bool:
+    """Whether an argument has the kind a stand-in requires (``None``: not given)."""
+    optional = kind.endswith("?")
+    kind = kind.rstrip("?")
+    if value is None or value.is_top or value.is_bottom:
+        return optional
+    for atom in value:
+        if kind == "class":
+            ok = isinstance(atom, ClassAtom) or (
+                isinstance(atom, Extern) and atom.qualname.rpartition(".")[2][:1].isupper())
+        elif kind == "function":
+            ok = isinstance(atom, (FuncAtom, BoundMethod))
+        elif kind == "str":
+            ok = isinstance(atom, Const) and isinstance(atom.value, str)
+        else:
+            ok = isinstance(atom, Const) and isinstance(atom.value, (int, float)) \
+                and not isinstance(atom.value, bool)
+        if not ok:
+            return False
+    return True
 
 
 def _argparse_dest(value: Value) -> list[str] | None:
