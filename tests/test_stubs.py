@@ -62,7 +62,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
 }
 #: Arguments without which an effect of that kind cannot become an entity.
 EFFECT_REQUIRED: dict[str, frozenset[str]] = {
-    "node": frozenset({"target", "name"}),
+    # (a node whose name the library makes at run time, like rqt's pid-suffixed one, has none)
+    "node": frozenset({"target"}),
     **{kind: frozenset({"node", name_arg, "type"}) for kind, (_, name_arg) in ENTITY_KINDS.items()},
     "timer": frozenset({"node", "period"}),
     "parameter": frozenset({"node", "name"}),

@@ -230,14 +230,50 @@ class CallSemantics:
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+        given = self._framework_arguments(obj, cid)
         for atom in init or ():
-            if isinstance(atom, BoundMethod):
+            if isinstance(atom, BoundMethod) and given:
+                func = self.program.functions[atom.fid]
+                ctx = self.bind_user(func, atom.receiver, Args(given, {}, False))
+                self.an.schedule(self.an.function_task(
+                    atom.fid, ctx if ctx is not None else self.default_context(atom.fid, atom.receiver)))
+            elif isinstance(atom, BoundMethod):
                 self.schedule_callback(atom)
         for lib_cls in self.library_bases(cid):
             for name in self.lib.called_methods(lib_cls):
                 for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+
+    def _framework_arguments(self, obj: Obj, cid: int) -> list[Value]:
+        """What the framework passes when it instantiates ``obj`` (``entry_args`` of its first
+        library base that declares some): a new object per argument, made by its modelled
+        ``__init__`` with no arguments at the class definition (an rqt plugin's context).
+        Their effects belong to a task of their own, ``("framework", module, (class,))``:
+        no task of the workspace runs that code."""
+        klass = self.program.classes[cid]
+        for lib_cls in self.library_bases(cid):
+            model = self.lib.classes.get(lib_cls)
+            if model is None or not model.entry_args:
+                continue
+            outer = self.frame
+            # The framework always makes them: nothing here is conditional.
+            self.frame = Frame(("framework", klass.module.name, (klass.qualname,)), klass.module,
+                               dominators=frozenset({0}))
+            out = []
+            try:
+                for index, qualname in enumerate(model.entry_args):
+                    qualname = self.lib.canonical(qualname)
+                    arg = Obj(f"{obj.site}#arg{index}", Extern(qualname))
+                    init = self.lib.method(qualname, "__init__")
+                    if init is not None:
+                        self.apply_model(init, arg, Args([], {}, False), klass.node)
+                    out.append(atoms([arg]))
+                self.an.effects[self.frame.task] = self.frame.effects
+            finally:
+                self.frame = outer
+            return out
+        return []
 
     def _site(self, node) -> str:
         """The allocation site of an object created at ``node``: the source position, plus
