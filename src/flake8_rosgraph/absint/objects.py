@@ -52,7 +52,8 @@ class ObjectSemantics:
                         return self.call(forward, Args([atoms([Const.of(attr)])], {}, False), None)
                 if field_value.is_bottom:
                     stand_in = self.lib.stand_in(attr)
-                    if stand_in is not None and self.unresolved_base(atom.cls) is not None:
+                    if stand_in is not None and isinstance(atom.cls, ClassAtom) \
+                            and self.unresolved_base(atom.cls) is not None:
                         # Only a call of the right shape is taken for the model's (calls.py).
                         return atoms([ExternBound(atom, f"{stand_in.owner}.{attr}")])
                 if field_value.is_bottom and not self._all_user(atom.cls) and (
