@@ -332,3 +332,133 @@ def test_shipped_stand_ins_name_parameters_their_methods_have() -> None:
             assert {param for param, _ in spec.kinds} <= params, (qualname, method)
             checked += 1
     assert checked == 6
+
+
+#: A `ros2 fleet` command-line extension outside ros2cli, built on its node helpers.
+CLI_PACKAGE = {
+    "ros2fleet/package.xml": PACKAGE_XML.format(name="ros2fleet", build="ament_python"),
+    "ros2fleet/setup.py": """
+        from setuptools import setup
+
+        setup(name='ros2fleet', packages=['ros2fleet'], entry_points={
+            'ros2cli.command': ['fleet = ros2fleet.command.fleet:FleetCommand'],
+            'ros2fleet.verb': ['battery = ros2fleet.verb.battery:BatteryVerb',
+                               'ping = ros2fleet.verb.ping:PingVerb',
+                               'list = ros2fleet.verb.list:ListVerb'],
+        })
+    """,
+    "ros2fleet/ros2fleet/__init__.py": "",
+    "ros2fleet/ros2fleet/command/__init__.py": "",
+    "ros2fleet/ros2fleet/command/fleet.py": """
+        from ros2cli.command import add_subparsers_on_demand, CommandExtension
+
+
+        class FleetCommand(CommandExtension):
+            def add_arguments(self, parser, cli_name):
+                add_subparsers_on_demand(parser, cli_name, '_verb', 'ros2fleet.verb', required=False)
+
+            def main(self, *, parser, args):
+                return args._verb.main(args=args)
+    """,
+    "ros2fleet/ros2fleet/verb/__init__.py": "",
+    "ros2fleet/ros2fleet/verb/battery.py": """
+        from ros2cli.node.strategy import add_arguments, NodeStrategy
+        from ros2cli.verb import VerbExtension
+        from sensor_msgs.msg import BatteryState
+
+        TOPIC = '/fleet/battery'
+
+
+        class BatteryVerb(VerbExtension):
+            def add_arguments(self, parser, cli_name):
+                add_arguments(parser)
+
+            def main(self, *, args):
+                with NodeStrategy(args) as node:
+                    node.create_subscription(BatteryState, TOPIC, self.show, 10)
+                    node.spin_until_shutdown()
+
+            def show(self, msg):
+                print(msg.percentage)
+    """,
+    "ros2fleet/ros2fleet/verb/ping.py": """
+        from ros2cli.node.direct import DirectNode
+        from ros2cli.verb import VerbExtension
+        from std_srvs.srv import Trigger
+
+
+        class PingVerb(VerbExtension):
+            def main(self, *, args):
+                with DirectNode(args, node_name='fleet_ping') as node:
+                    client = node.create_client(Trigger, 'fleet/ping')
+                    return client.call(Trigger.Request())
+    """,
+    # Graph queries only: the daemon answers them, no entity is created.
+    "ros2fleet/ros2fleet/verb/list.py": """
+        from ros2cli.node.strategy import NodeStrategy
+        from ros2cli.verb import VerbExtension
+
+
+        class ListVerb(VerbExtension):
+            def main(self, *, args):
+                with NodeStrategy(args) as node:
+                    for name, types in node.get_topic_names_and_types():
+                        print(name, types)
+    """,
+}
+
+
+def test_ros2cli_extensions_create_their_entities_on_the_cli_node(tmp_path: Path) -> None:
+    write(tmp_path, CLI_PACKAGE)
+    graph = build_graph(tmp_path)
+    assert sorted(((n.name, n.namespace, n.location.path, n.location.line,
+                    sorted((e.kind, e.name, e.type, e.callback) for e in n.entities))
+                   for n in graph.nodes), key=repr) == [
+        ("fleet_ping", "/", "ros2fleet/ros2fleet/verb/ping.py", 8,
+         [("clients", "/fleet/ping", "std_srvs/srv/Trigger", None)]),
+        (None, "/", "ros2fleet/ros2fleet/verb/battery.py", 13,
+         [("subscriptions", "/fleet/battery", "sensor_msgs/msg/BatteryState", "BatteryVerb.show")]),
+        # the strategy is modelled as the direct node it may fall back to (docs/stubs.md)
+        (None, "/", "ros2fleet/ros2fleet/verb/list.py", 7, []),
+    ]
+    assert _codes(graph) == []
+
+
+#: A launch action outside launch_ros that asks the launch's own ROS node for a client.
+LAUNCH_ACTION_PACKAGE = {
+    "arm_bringup/package.xml": PACKAGE_XML.format(name="arm_bringup", build="ament_python"),
+    "arm_bringup/arm_bringup/__init__.py": "",
+    "arm_bringup/arm_bringup/actions.py": """
+        from launch.action import Action
+        from launch_ros.ros_adapters import get_ros_node
+        from std_srvs.srv import Trigger
+
+
+        class WaitForArm(Action):
+            def __init__(self, service, **kwargs):
+                super().__init__(**kwargs)
+                self.service = service
+
+            def execute(self, context):
+                node = get_ros_node(context)
+                self.client = node.create_client(Trigger, self.service)
+                return None
+    """,
+    "arm_bringup/launch/arm.launch.py": """
+        from launch import LaunchDescription
+        from arm_bringup.actions import WaitForArm
+
+
+        def generate_launch_description():
+            return LaunchDescription([WaitForArm('/arm/ready')])
+    """,
+}
+
+
+def test_launch_actions_create_clients_on_the_launch_node(tmp_path: Path) -> None:
+    write(tmp_path, LAUNCH_ACTION_PACKAGE)
+    graph = build_graph(tmp_path)
+    assert [(n.name, n.namespace, n.location.path, [(e.kind, e.name, e.type) for e in n.entities])
+            for n in graph.nodes] == [
+        (None, "/", "arm_bringup/arm_bringup/actions.py",
+         [("clients", "/arm/ready", "std_srvs/srv/Trigger")])]
