@@ -462,3 +462,69 @@ def test_launch_actions_create_clients_on_the_launch_node(tmp_path: Path) -> Non
             for n in graph.nodes] == [
         (None, "/", "arm_bringup/arm_bringup/actions.py",
          [("clients", "/arm/ready", "std_srvs/srv/Trigger")])]
+
+
+SIMPLE_NODE_PATROL = """
+    import rclpy
+    from {base_module} import Node
+    from nav2_msgs.action import NavigateToPose
+    from std_srvs.srv import Trigger
+
+
+    class Patrol(Node):
+        def __init__(self):
+            super().__init__('patrol', namespace='robot1')
+            self.client = self.create_client(Trigger, 'dock')
+            self.create_timer(1.0, self.tick)
+
+        def tick(self):
+            self.client.wait_for_service()
+            self.client.call(Trigger.Request())
+
+
+    def main():
+        rclpy.init()
+        node = Patrol()
+        {spin}
+"""
+
+
+def test_simple_node_subclasses_are_nodes_whose_synchronous_calls_are_safe(tmp_path: Path) -> None:
+    """simple_node spins its node on a multi-threaded executor and gives each client a reentrant
+    group, so a synchronous call in a callback is its purpose; the same code on rclpy's Node
+    spun by rclpy.spin deadlocks."""
+    write(tmp_path / "simple", {
+        "patrol/package.xml": PACKAGE_XML.format(name="patrol", build="ament_python"),
+        "patrol/patrol/__init__.py": "",
+        "patrol/patrol/patrol.py": SIMPLE_NODE_PATROL.format(base_module="simple_node",
+                                                             spin="node.join_spin()"),
+        "patrol/patrol/navigate.py": """
+            from simple_node import Node
+            from nav2_msgs.action import NavigateToPose
+
+
+            class Navigator(Node):
+                def __init__(self):
+                    super().__init__('navigator')
+                    self.nav = self.create_action_client(NavigateToPose, 'navigate_to_pose')
+                    self.create_action_server(NavigateToPose, 'patrol_to', self.execute)
+
+                def execute(self, goal_handle):
+                    self.nav.wait_for_server()
+                    return NavigateToPose.Result()
+        """,
+    })
+    graph = build_graph(tmp_path / "simple")
+    assert sorted(((n.fqn, n.cls), sorted((e.kind, e.name) for e in n.entities if e.kind != "timers"))
+                  for n in graph.nodes) == [
+        (("/navigator", "Navigator"), [("action_clients", "/navigate_to_pose"),
+                                       ("action_servers", "/patrol_to")]),
+        (("/robot1/patrol", "Patrol"), [("clients", "/robot1/dock")]),
+    ]
+    assert [c for c, _ in _codes(graph)] == []
+    write(tmp_path / "plain", {
+        "patrol/package.xml": PACKAGE_XML.format(name="patrol", build="ament_python"),
+        "patrol/patrol/patrol.py": SIMPLE_NODE_PATROL.format(base_module="rclpy.node",
+                                                             spin="rclpy.spin(node)"),
+    })
+    assert [c for c, _ in _codes(build_graph(tmp_path / "plain"))] == ["ROS101"]
