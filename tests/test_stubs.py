@@ -641,3 +641,8 @@ def test_user_stub_models_a_wrapper_library_the_analyser_cannot_see():
 
 def test_without_the_user_stub_the_wrapper_library_is_invisible():
     assert graph_of("user_wrapper/ws").nodes == []
+
+
+def test_every_shipped_stub_is_in_the_table_of_shipped_models():
+    table = (Path(__file__).parent.parent / "docs" / "stubs.md").read_text(encoding="utf-8")
+    assert [name for name in SHIPPED_NAMES if f"| `{name}` |" not in table] == []
