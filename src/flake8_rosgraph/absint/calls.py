@@ -348,11 +348,15 @@ class CallSemantics:
         if spec is None or base is None or not _has_shape(model, spec, args):
             self._escape(args)
             return TOP
+        # An argument the call leaves out is whatever the base class passes, not rclpy's
+        # default: a base may well give its clients a reentrant group or its own QoS.
         return self.apply_model(model, receiver, args, node,
-                                marks=(("unresolved_base", const(base)),))
+                                marks=(("unresolved_base", const(base)),), known_defaults=False)
 
-    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args") -> dict:
-        """Arguments of a library call by parameter name (⊥ arguments count as unknown)."""
+    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args",
+                   known_defaults: bool = True) -> dict:
+        """Arguments of a library call by parameter name (⊥ arguments count as unknown; so do
+        left-out ones without ``known_defaults``)."""
         params = model.signature.params
         pos = ([atoms([receiver])] if receiver is not None else []) + list(args.pos)
         bound: dict[str, Value] = {}
@@ -369,7 +373,8 @@ class CallSemantics:
             elif param.name in args.kw:
                 bound[param.name] = args.kw[param.name]
             elif param.name not in bound:
-                bound[param.name] = TOP if args.star or param.default is None else param.default
+                bound[param.name] = TOP if args.star or param.default is None or not known_defaults \
+                    else param.default
         return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
 
     @staticmethod
@@ -394,10 +399,11 @@ class CallSemantics:
         return out
 
     def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node,
-                    marks: tuple[tuple[str, Value], ...] = ()) -> Value:
+                    marks: tuple[tuple[str, Value], ...] = (), known_defaults: bool = True) -> Value:
         """Bind, compute the return value, record the effects (with ``marks`` appended to
-        each one's arguments), perform the stores and schedule the callbacks of a library call."""
-        bound = self.bind_model(model, receiver, args)
+        each one's arguments), perform the stores and schedule the callbacks of a library call
+        (``known_defaults=False``: parameters the call leaves out are unknown)."""
+        bound = self.bind_model(model, receiver, args, known_defaults)
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
         frame = self.frame
