@@ -229,9 +229,8 @@ def test_lookalike_calls_on_other_frameworks_create_nothing(tmp_path: Path) -> N
             "known to be a modelled library object here; the base class rosbag_kit.recorder.Recorder "
             "is not resolved (imported from a library no stub models), and this call does not have "
             "the shape of rclpy's method (its arguments' number, names and kinds)") in lines
-    assert ("bag_tools/bag_tools/recorder.py:30:9: self.create_publisher: not in the graph: class "
-            "Player has its own create_publisher method: the call is to the workspace's code, not a "
-            "library's") in lines
+    # Player's own create_publisher is no creation site (explain.py, _own_method)
+    assert not any(line.startswith("bag_tools/bag_tools/recorder.py:30:") for line in lines)
 
 
 RQT_PACKAGE = {

@@ -295,9 +295,6 @@ class _Explainer:
         receiver = call.func.value if isinstance(call.func, ast.Attribute) else call.func
         on_self = func is not None and func.cls is not None and isinstance(receiver, ast.Name) \
             and receiver.id == "self"
-        if on_self and self._defines(func.cls, call.func.attr):
-            return [f"class {self.program.classes[func.cls].qualname} has its own "
-                    f"{call.func.attr} method: the call is to the workspace's code, not a library's"]
         reasons = [f"`{_short(receiver)}` is not known to be a modelled library object here"]
         base = analysed_unresolved_base(self.an.heap, self.library, func.cls) if on_self else None
         if base is not None:
@@ -321,20 +318,6 @@ class _Explainer:
         if func.parent is not None:
             return f"nested function {func.qualname} is never called"
         return f"function {func.qualname} is never called from any entry point"
-
-    def _defines(self, cid: int, name: str) -> bool:
-        """Whether workspace class ``cid`` or one of its workspace bases defines method ``name``
-        (then a call of it on ``self`` is the workspace's own, whatever the unresolved base)."""
-        todo, seen = [cid], set()
-        while todo:
-            cur = todo.pop()
-            if cur in seen:
-                continue
-            seen.add(cur)
-            if name in self.program.classes[cur].methods:
-                return True
-            todo.extend(analysed_user_bases(self.an.heap, cur))
-        return False
 
     def _instantiated(self, cid: int) -> bool:
         """Whether analysed code instantiates the class or a subclass of it."""
