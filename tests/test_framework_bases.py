@@ -228,7 +228,7 @@ def test_lookalike_calls_on_other_frameworks_create_nothing(tmp_path: Path) -> N
     assert ("bag_tools/bag_tools/recorder.py:11:9: self.create_timer: not in the graph: `self` is not "
             "known to be a modelled library object here; the base class rosbag_kit.recorder.Recorder "
             "is not resolved (imported from a library no stub models), and this call does not have "
-            "the shape of rclpy's method (its arguments' number, names and kinds)") in lines
+            "the shape of rclpy.node.Node.create_timer (its arguments' number, names and kinds)") in lines
     # Player's own create_publisher is no creation site (explain.py, _own_method)
     assert not any(line.startswith("bag_tools/bag_tools/recorder.py:30:") for line in lines)
 

@@ -296,10 +296,12 @@ class _Explainer:
         on_self = func is not None and func.cls is not None and isinstance(receiver, ast.Name) \
             and receiver.id == "self"
         reasons = [f"`{_short(receiver)}` is not known to be a modelled library object here"]
-        base = analysed_unresolved_base(self.an.heap, self.library, func.cls) if on_self else None
+        stand_in = self.library.stand_in(call.func.attr) if on_self else None
+        model = self.library.method(stand_in.owner, call.func.attr) if stand_in else None
+        base = analysed_unresolved_base(self.an.heap, self.library, func.cls) if model else None
         if base is not None:
             reasons.append(f"the base class {base} is not resolved (imported from a library no stub "
-                           "models), and this call does not have the shape of rclpy's method "
+                           f"models), and this call does not have the shape of {model.qualname} "
                            "(its arguments' number, names and kinds)")
         return reasons + self._origin_reasons(call, scope, receiver, module)
 

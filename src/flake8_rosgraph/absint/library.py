@@ -192,7 +192,6 @@ class StandIn:
     ``create_timer(name, 1.0)`` of some other framework is not rclpy's)."""
 
     owner: str                              # the model class that declares it
-    method: str
     kinds: tuple[tuple[str, str], ...]      # (parameter, kind[?])
 
 
@@ -404,8 +403,9 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
 
 
 def _stand_ins(owner: str, raw: Any, where: str) -> dict[str, StandIn]:
-    """``{ method = { param = "kind", … }, … }``: the parameters must be the method's own
-    (checked when the method is looked up: it may come from a base in another file)."""
+    """``{ method = { param = "kind", … }, … }``. A parameter the method lacks is never given,
+    so a required kind on it makes no call match (the method may come from a base class in
+    another stub file, so this is not checked here)."""
     out = {}
     for method, kinds in _table(raw, where).items():
         kinds = _table(kinds, f"{where}.{method}")
@@ -413,7 +413,7 @@ def _stand_ins(owner: str, raw: Any, where: str) -> dict[str, StandIn]:
             if not isinstance(kind, str) or kind.rstrip("?") not in ARGUMENT_KINDS:
                 raise StubError(f"{where}.{method}.{param}: expected one of "
                                 f"{', '.join(sorted(ARGUMENT_KINDS))} (optionally with a trailing ?)")
-        out[method] = StandIn(owner, method, tuple(sorted(kinds.items())))
+        out[method] = StandIn(owner, tuple(sorted(kinds.items())))
     return out
 
 
