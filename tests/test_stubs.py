@@ -63,7 +63,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
 }
 #: Arguments without which an effect of that kind cannot become an entity.
 EFFECT_REQUIRED: dict[str, frozenset[str]] = {
-    "node": frozenset({"target", "name"}),
+    # (a node whose name the library makes at run time, like rqt's pid-suffixed one, has none)
+    "node": frozenset({"target"}),
     **{kind: frozenset({"node", name_arg, "type"}) for kind, (_, name_arg) in ENTITY_KINDS.items()},
     "timer": frozenset({"node", "period"}),
     "parameter": frozenset({"node", "name"}),
@@ -645,3 +646,8 @@ def test_user_stub_models_a_wrapper_library_the_analyser_cannot_see():
 
 def test_without_the_user_stub_the_wrapper_library_is_invisible():
     assert graph_of("user_wrapper/ws").nodes == []
+
+
+def test_every_shipped_stub_is_in_the_table_of_shipped_models():
+    table = (Path(__file__).parent.parent / "docs" / "stubs.md").read_text(encoding="utf-8")
+    assert [name for name in SHIPPED_NAMES if f"`{name}`" not in table] == []

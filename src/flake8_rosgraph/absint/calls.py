@@ -17,7 +17,7 @@ from .callgraph import CallSite
 from .engine import Effect
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
-from .library import FunctionModel, Ref, ReturnSpec
+from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
@@ -242,14 +242,50 @@ class CallSemantics:
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+        given = self._framework_arguments(obj, cid)
         for atom in init or ():
-            if isinstance(atom, BoundMethod):
+            if isinstance(atom, BoundMethod) and given:
+                func = self.program.functions[atom.fid]
+                ctx = self.bind_user(func, atom.receiver, Args(given, {}, False))
+                self.an.schedule(self.an.function_task(
+                    atom.fid, ctx if ctx is not None else self.default_context(atom.fid, atom.receiver)))
+            elif isinstance(atom, BoundMethod):
                 self.schedule_callback(atom)
         for lib_cls in self.library_bases(cid):
             for name in self.lib.called_methods(lib_cls):
                 for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+
+    def _framework_arguments(self, obj: Obj, cid: int) -> list[Value]:
+        """What the framework passes when it instantiates ``obj`` (``entry_args`` of its first
+        library base that declares some): a new object per argument, made by its modelled
+        ``__init__`` with no arguments at the class definition (an rqt plugin's context).
+        Their effects belong to a task of their own, ``("framework", module, (class,))``:
+        no task of the workspace runs that code."""
+        klass = self.program.classes[cid]
+        for lib_cls in self.library_bases(cid):
+            model = self.lib.classes.get(lib_cls)
+            if model is None or not model.entry_args:
+                continue
+            outer = self.frame
+            # The framework always makes them: nothing here is conditional.
+            self.frame = Frame(("framework", klass.module.name, (klass.qualname,)), klass.module,
+                               dominators=frozenset({0}))
+            out = []
+            try:
+                for index, qualname in enumerate(model.entry_args):
+                    qualname = self.lib.canonical(qualname)
+                    arg = Obj(f"{obj.site}#arg{index}", Extern(qualname))
+                    init = self.lib.method(qualname, "__init__")
+                    if init is not None:
+                        self.apply_model(init, arg, Args([], {}, False), klass.node)
+                    out.append(atoms([arg]))
+                self.an.effects[self.frame.task] = self.frame.effects
+            finally:
+                self.frame = outer
+            return out
+        return []
 
     def _site(self, node) -> str:
         """The allocation site of an object created at ``node``: the source position, plus
@@ -306,10 +342,33 @@ class CallSemantics:
         if model is None:
             self._escape(args)
             return TOP
-        return self.apply_model(model, atom.receiver, args, node)
+        receiver = atom.receiver
+        if isinstance(receiver, Obj) and Extern(owner) not in self.mro(receiver.cls):
+            return self._call_stand_in(model, owner, receiver, args, node)
+        return self.apply_model(model, receiver, args, node)
 
-    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args") -> dict:
-        """Arguments of a library call by parameter name (⊥ arguments count as unknown)."""
+    def _call_stand_in(self, model: FunctionModel, owner: str, receiver: Obj, args: "Args",
+                       node) -> Value:
+        """A method the receiver's unresolved base class may provide, modelled by a stand-in
+        (:class:`~.library.StandIn`): the model's effects when the call has its shape, each
+        marked with the base class (``unresolved_base``) so that consumers know the object is
+        only presumed to be what the model describes; otherwise an unknown call."""
+        name = model.qualname.rpartition(".")[2]
+        declared = self.lib.classes.get(owner)
+        spec = declared.stand_in_for_unresolved.get(name) if declared is not None else None
+        base = self.unresolved_base(receiver.cls)
+        if spec is None or base is None or not _has_shape(model, spec, args):
+            self._escape(args)
+            return TOP
+        # An argument the call leaves out is whatever the base class passes, not rclpy's
+        # default: a base may well give its clients a reentrant group or its own QoS.
+        return self.apply_model(model, receiver, args, node,
+                                marks=(("unresolved_base", const(base)),), known_defaults=False)
+
+    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args",
+                   known_defaults: bool = True) -> dict:
+        """Arguments of a library call by parameter name (⊥ arguments count as unknown; so do
+        left-out ones without ``known_defaults``)."""
         params = model.signature.params
         pos = ([atoms([receiver])] if receiver is not None else []) + list(args.pos)
         bound: dict[str, Value] = {}
@@ -326,7 +385,8 @@ class CallSemantics:
             elif param.name in args.kw:
                 bound[param.name] = args.kw[param.name]
             elif param.name not in bound:
-                bound[param.name] = TOP if args.star or param.default is None else param.default
+                bound[param.name] = TOP if args.star or param.default is None or not known_defaults \
+                    else param.default
         return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
 
     @staticmethod
@@ -350,15 +410,19 @@ class CallSemantics:
             out[name] = text if len(text) <= 80 else text[:77] + "..."
         return out
 
-    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node) -> Value:
-        bound = self.bind_model(model, receiver, args)
+    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node,
+                    marks: tuple[tuple[str, Value], ...] = (), known_defaults: bool = True) -> Value:
+        """Bind, compute the return value, record the effects (with ``marks`` appended to
+        each one's arguments), perform the stores and schedule the callbacks of a library call
+        (``known_defaults=False``: parameters the call leaves out are unknown)."""
+        bound = self.bind_model(model, receiver, args, known_defaults)
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
         frame = self.frame
         recorded = []
         written = self.argument_texts(model, receiver, node) if model.effects else {}
         for index, spec in enumerate(model.effects):
-            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
+            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args
                           if ref.how == "arg" and ref.data in written)
             key = (id(node), model.qualname, index, receiver)
@@ -572,6 +636,50 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _has_shape(model: FunctionModel, spec: StandIn, args: "Args") -> bool:
+    """Whether a call (without its receiver) binds to ``model``'s parameters exactly as Python
+    would (no unpacking, no missing or surplus argument, no keyword the method lacks) and
+    gives the parameters ``spec`` names arguments of their kinds."""
+    if args.star:
+        return False
+    params = model.signature.params[1:]  # the receiver is ``self``
+    positional = [p for p in params if p.kind == "pos"]
+    named = {p.name for p in params if p.kind in ("pos", "kwonly")}
+    if len(args.pos) > len(positional) and not any(p.kind == "varargs" for p in params):
+        return False
+    given = {p.name: v for p, v in zip(positional, args.pos)}
+    for key, value in args.kw.items():
+        if key in given or (key not in named and not any(p.kind == "varkw" for p in params)):
+            return False
+        given[key] = value
+    if any(p.default is None and p.kind in ("pos", "kwonly") and p.name not in given
+           for p in params):
+        return False
+    return all(_of_kind(given.get(param), kind) for param, kind in spec.kinds)
+
+
+def _of_kind(value: Value | None, kind: str) -> bool:
+    """Whether an argument has the kind a stand-in requires (``None``: not given)."""
+    optional = kind.endswith("?")
+    kind = kind.rstrip("?")
+    if value is None or value.is_top or value.is_bottom:
+        return optional
+    for atom in value:
+        if kind == "class":
+            ok = isinstance(atom, ClassAtom) or (
+                isinstance(atom, Extern) and atom.qualname.rpartition(".")[2][:1].isupper())
+        elif kind == "function":
+            ok = isinstance(atom, (FuncAtom, BoundMethod))
+        elif kind == "str":
+            ok = isinstance(atom, Const) and isinstance(atom.value, str)
+        else:
+            ok = isinstance(atom, Const) and isinstance(atom.value, (int, float)) \
+                and not isinstance(atom.value, bool)
+        if not ok:
+            return False
+    return True
 
 
 def _argparse_dest(value: Value) -> list[str] | None:

@@ -7,6 +7,8 @@ receiver's C3 linearisation.
 from __future__ import annotations
 
 
+import sys
+
 from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
@@ -14,6 +16,9 @@ from .calls import Args
 
 #: The attributes that name a class.
 _NAME_ATTRS = ("__module__", "__name__", "__qualname__")
+#: Top-level modules of the standard library (``builtins`` included): an ``abc.ABC`` or
+#: ``threading.Thread`` base is no unresolved library class.
+_STDLIB = frozenset(sys.stdlib_module_names) | {"builtins"}
 
 
 class ObjectSemantics:
@@ -45,6 +50,12 @@ class ObjectSemantics:
                     forward = self.class_attr(self.mro(atom.cls), "__getattr__", atom)
                     if forward is not None:
                         return self.call(forward, Args([atoms([Const.of(attr)])], {}, False), None)
+                if field_value.is_bottom:
+                    stand_in = self.lib.stand_in(attr)
+                    if stand_in is not None and isinstance(atom.cls, ClassAtom) \
+                            and self.unresolved_base(atom.cls) is not None:
+                        # Only a call of the right shape is taken for the model's (calls.py).
+                        return atoms([ExternBound(atom, f"{stand_in.owner}.{attr}")])
                 if field_value.is_bottom and not self._all_user(atom.cls) and (
                         attr not in self.program.stored_attrs or isinstance(atom.cls, Extern)):
                     # Nothing here assigns it: the library's attribute. An instance of a
@@ -96,6 +107,11 @@ class ObjectSemantics:
             return self.extern(f"{cls.qualname}.{attr}")
         module, name = identity
         return const(module if attr == "__module__" else name)
+
+    def unresolved_base(self, cls: Atom) -> str | None:
+        """The first base class of workspace class ``cls`` (along its MRO) that is imported from
+        a library no stub models and that is not the standard library's; ``None`` if none."""
+        return next((b.qualname for b in self.mro(cls) if _unresolved(b, self.lib)), None)
 
     def _all_user(self, cls: Atom) -> bool:
         return all(isinstance(c, ClassAtom) or c == Extern("builtins.object")
@@ -194,6 +210,29 @@ def analysed_user_bases(heap: dict, cid: int) -> list[int]:
     """The workspace base classes of class ``cid``, as the analysis evaluated them."""
     return [a.cid for a in _flatten_bases(heap.get(("bases", cid), BOTTOM))
             if isinstance(a, ClassAtom)]
+
+
+def analysed_unresolved_base(heap: dict, lib, cid: int) -> str | None:
+    """The first unresolved base class (see ``unresolved_base``) of workspace class ``cid`` or
+    of its workspace bases, depth-first, as the analysis evaluated them; for reports."""
+    todo, seen = [cid], set()
+    while todo:
+        cur = todo.pop(0)
+        if cur in seen:
+            continue
+        seen.add(cur)
+        for atom in _flatten_bases(heap.get(("bases", cur), BOTTOM)):
+            if _unresolved(atom, lib):
+                return atom.qualname
+            if isinstance(atom, ClassAtom):
+                todo.append(atom.cid)
+    return None
+
+
+def _unresolved(atom: Atom, lib) -> bool:
+    """A library class no stub models, outside the standard library."""
+    return isinstance(atom, Extern) and atom.qualname not in lib.classes \
+        and atom.qualname.partition(".")[0] not in _STDLIB
 
 
 def _flatten_bases(value: Value) -> list[Atom]:

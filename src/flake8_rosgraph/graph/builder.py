@@ -171,6 +171,9 @@ class GraphBuilder:
         for eff in effects:
             if eff.kind == "node":
                 self._add_node(eff)
+        for eff in effects:
+            if "unresolved_base" in dict(eff.args):
+                self._add_presumed_node(eff)
         entities: dict[int, dict[tuple, Entity]] = {}
         for eff in effects:
             for node in self._owners(eff):
@@ -231,6 +234,22 @@ class GraphBuilder:
                     known = self.by_object.setdefault(obj.site, [])
                     if all(n is not node for n in known):
                         known.append(node)
+
+    def _add_presumed_node(self, eff: Effect) -> None:
+        """The node an object of a class with an unresolved base is presumed to be, when the
+        analysis took a call on it for rclpy's (``unresolved_base`` in the effect): one per
+        class, of unknown name and namespace, located at its class definition."""
+        base = (eff.arg("unresolved_base").strings() or [None])[0]
+        for obj in eff.arg("node"):
+            if not isinstance(obj, Obj) or not isinstance(obj.cls, ClassAtom) or obj.site in self.by_object:
+                continue
+            klass = self.program.classes[obj.cls.cid]
+            location = Location(klass.module.path, klass.node.lineno, klass.module.column(klass.node))
+            node = self.nodes.get((location, None, None))
+            if node is None:
+                node = self.nodes[(location, None, None)] = RosNode(
+                    None, None, location, klass.qualname, unresolved_base=base)
+            self.by_object[obj.site] = [node]
 
     def _owners(self, eff: Effect) -> list[RosNode]:
         if eff.kind == "node":

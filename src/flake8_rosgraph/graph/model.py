@@ -88,6 +88,9 @@ class RosNode:
     #: local arguments before the process's, so a launch file's ``name``/``namespace`` do
     #: not replace them.
     local_overrides: tuple[str, ...] = ()
+    #: For a node presumed from Node API calls in a class whose base class is not resolved
+    #: (an import no stub models): that base class. Its name and namespace are unknown.
+    unresolved_base: str | None = None
 
     @property
     def fqn(self) -> str | None:
