@@ -6,7 +6,11 @@ they become nodes and entities.  A node is one creation site × one possible
 (name, namespace); an entity attaches to every node its ``node`` argument may be.
 Names are expanded and validated with rcl's rules (:mod:`.names`); a value the
 analysis could not pin down becomes ``None`` ("unknown"), and a value with several
-possibilities yields one entity per possibility.
+possibilities yields one entity per possibility.  An unknown name that is known to
+include some constants (``param if launched else '/scan'``) yields one entity per
+constant, marked ``partial``, beside the unknown one: the graph names what it can and
+keeps the unknown an unknown.  A type argument that may be one of several message
+classes yields one entity per class.
 """
 from __future__ import annotations
 
@@ -37,8 +41,10 @@ QOS_NUMBERS = ("depth",)
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 
 
-def interface_type(value: Value) -> str | None:
-    """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``"std_msgs/msg/String"``."""
+def interface_types(value: Value) -> list[str | None]:
+    """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``["std_msgs/msg/String"]``;
+    one type per possibility (``Twist if stamped else TwistStamped``), ``[None]`` when any
+    possibility is not an interface the graph can name."""
     found = set()
     for atom in value:
         if isinstance(atom, Extern):
@@ -49,8 +55,8 @@ def interface_type(value: Value) -> str | None:
         if isinstance(atom, Const) and isinstance(atom.value, str) and atom.value.count("/") == 2:
             found.add(atom.value)
             continue
-        return None
-    return found.pop() if len(found) == 1 else None
+        return [None]
+    return sorted(found) if found else [None]
 
 
 def _policy(value: Value | None) -> str | None:
@@ -154,6 +160,16 @@ def _choices(value: Value) -> list[str | None]:
     return list(strings) if strings else [None]
 
 
+def _name_choices(value: Value) -> list[tuple[str | None, bool]]:
+    """Every possible name with whether it is only *partly* known: the strings an unknown
+    was joined with (``param if launched else '/scan'``), listed beside the unknown
+    (``None``) that stands for the rest."""
+    hinted = [h for h in value.hinted() if isinstance(h, str)]
+    if hinted:
+        return [(h, True) for h in hinted] + [(None, False)]
+    return [(c, False) for c in _choices(value)]
+
+
 class GraphBuilder:
     def __init__(self, analysis: Analysis) -> None:
         self.analysis = analysis
@@ -244,7 +260,7 @@ class GraphBuilder:
         common = dict(location=location, conditional=eff.conditional)
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
-            type_ = interface_type(eff.arg("type"))
+            types = interface_types(eff.arg("type"))
             qos = qos_of(eff.arg("qos"), dict(eff.args).get("qos_for_depth")) \
                 if kind in ("publishers", "subscriptions") else None
             callback = self.callback_name(eff.arg("callback")) if "callback" in dict(eff.args) \
@@ -252,14 +268,14 @@ class GraphBuilder:
             via = eff.arg("via").strings()
             out = []
             written = dict(eff.texts).get(name_arg)
-            for raw in _choices(eff.arg(name_arg)):
+            for raw, partial in _name_choices(eff.arg(name_arg)):
                 name, problem = self._resolve(raw, node)
                 suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
                     else None
-                out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
-                                  callback=callback, invalid=problem,
-                                  via=via[0] if via else None, name_text=written,
-                                  name_suffix=suffix, **common))
+                out.extend(Entity(kind, name, raw_name=raw, type=type_, qos=qos, callback=callback,
+                                  invalid=problem, via=via[0] if via else None, name_text=written,
+                                  name_suffix=suffix, partial=partial, **common)
+                           for type_ in types)
             return out
         if eff.kind == "timer":
             callback = self.callback_name(eff.arg("callback"))
@@ -272,8 +288,8 @@ class GraphBuilder:
         if eff.kind == "parameter":
             default = json_value(eff.arg("default"))
             return [Entity("parameters", n, raw_name=n, default=default,
-                           invalid=_param_problem(n), **common)
-                    for n in _choices(eff.arg("name"))]
+                           invalid=_param_problem(n), partial=partial, **common)
+                    for n, partial in _name_choices(eff.arg("name"))]
         if eff.kind == "parameters":
             return self._declared_parameters(eff, common)
         return []
@@ -439,7 +455,7 @@ def _entity_order(e: Entity) -> tuple:
     """Sort key that is also the identity of an entity on its node."""
     return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
             e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
-            e.invalid or "", e.via or "")
+            e.invalid or "", e.via or "", e.partial)
 
 
 def build_graph_from(analysis: Analysis) -> RosGraph:
