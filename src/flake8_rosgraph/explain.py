@@ -26,7 +26,7 @@ from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_user_bases
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS
-from .graph.model import RosGraph
+from .graph.model import Entity, RosGraph
 
 #: Effect kinds that put something in the graph a user looks for (parameters are listed
 #: by their own declarations and are not creation sites).
@@ -234,7 +234,7 @@ class _Explainer:
             return Explanation(site, "complete", ())
         reasons = list(unknowns)
         for unknown in unknowns:
-            field = unknown.removeprefix("unknown ")
+            field = unknown.removeprefix("unknown ").split(" ")[0]
             found = self._owner_reasons(key) if field == "name" else []
             if not found:  # the written value itself is unknown
                 argument = self._field_argument(call, model, effects, field)
@@ -265,7 +265,7 @@ class _Explainer:
             if not found:
                 return None
             if any(e.kind != "timers" and e.name is None for _, e in found):
-                out.append("unknown name")
+                out.append("unknown name" + _partly_known(e for _, e in found))
             if any(e.kind != "timers" and e.type is None for _, e in found):
                 out.append("unknown type")
         return out
@@ -440,6 +440,15 @@ def _dotted(expr: ast.AST) -> str | None:
     if isinstance(expr, ast.Name):
         return ".".join([expr.id] + parts[::-1])
     return None
+
+
+def _partly_known(entities: Iterable[Entity]) -> str:
+    """`` (known only partly: '/scan' or something else)`` for a name an unknown was joined
+    with known constants to (``param if launched else '/scan'``); empty otherwise."""
+    known = sorted({e.name for e in entities if e.partial and e.name is not None})
+    if not known:
+        return ""
+    return " (known only partly: " + " or ".join(f"'{n}'" for n in known) + " or something else)"
 
 
 def _label(func: ast.Attribute) -> str:

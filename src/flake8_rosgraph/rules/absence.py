@@ -8,6 +8,10 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   or the user's external names — see :mod:`.exempt`);
 * some entity of the peer kind has a name the analysis could not resolve and a
   type that does not rule the match out;
+* the end's name is known only partly (``param if launched else '/scan'``): its
+  site's unknown alternative may be connected. A partly known end does count as
+  the present other end of its name (``/scan`` above satisfies a subscriber of
+  ``/scan``), but never makes another end reportable (:meth:`.EndpointIndex.wired_nodes`);
 * another alternative of the same creation site (``'a' if sim else 'b'``) is
   connected or excused: the site works in at least one configuration;
 * the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
@@ -99,6 +103,7 @@ class AbsenceRule(Rule):
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
         return (endpoint.entity.invalid is None  # rclpy raises before it exists; ROS006 says so
+                and not endpoint.entity.partial  # the site's unknown alternative may be connected
                 and endpoint.entity.name not in exempt
                 and not index.peers(endpoint)
                 and not index.unresolved_peer_may_match(endpoint))
