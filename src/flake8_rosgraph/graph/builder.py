@@ -10,7 +10,8 @@ possibilities yields one entity per possibility.  An unknown name that is known 
 include some constants (``param if launched else '/scan'``) yields one entity per
 constant, marked ``partial``, beside the unknown one: the graph names what it can and
 keeps the unknown an unknown.  A type argument that may be one of several message
-classes yields one entity per class.
+classes yields one entity per class — when the name is one: with several names and
+several types, which goes with which is unknown, and the type stays unknown.
 """
 from __future__ import annotations
 
@@ -268,7 +269,12 @@ class GraphBuilder:
             via = eff.arg("via").strings()
             out = []
             written = dict(eff.texts).get(name_arg)
-            for raw, partial in _name_choices(eff.arg(name_arg)):
+            choices = _name_choices(eff.arg(name_arg))
+            if len(choices) > 1 and len(types) > 1:
+                # Which type goes with which name is not known (a name -> type table iterated
+                # in one loop): every pairing would invent wrong entities.
+                types = [None]
+            for raw, partial in choices:
                 name, problem = self._resolve(raw, node)
                 suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
                     else None
