@@ -443,12 +443,12 @@ def _dotted(expr: ast.AST) -> str | None:
 
 
 def _partly_known(entities: Iterable[Entity]) -> str:
-    """`` (known only partly: '/scan' or something else)`` for a name an unknown was joined
-    with known constants to (``param if launched else '/scan'``); empty otherwise."""
+    """`` (known only partly: '/scan' on some paths, unknown on others)`` for a name that is
+    an unknown joined with known constants (``param if launched else '/scan'``); empty otherwise."""
     known = sorted({e.name for e in entities if e.partial and e.name is not None})
     if not known:
         return ""
-    return " (known only partly: " + " or ".join(f"'{n}'" for n in known) + " or something else)"
+    return " (known only partly: " + " or ".join(f"'{n}'" for n in known) + " on some paths, unknown on others)"
 
 
 def _label(func: ast.Attribute) -> str:
