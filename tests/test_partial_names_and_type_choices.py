@@ -233,3 +233,17 @@ def test_a_name_to_type_table_does_not_pair_every_name_with_every_type(tmp_path:
         (12, "/relayed/front/scan", "?", ""), (12, "/relayed/odom", "?", "")]}
     assert endpoints(root, "subscriptions") == {"/relay": [
         (14, "/front/scan", "LaserScan", ""), (14, "/rear/scan", "LaserScan", "")]}
+
+
+def test_a_guarded_empty_default_is_no_partly_known_name(tmp_path: Path) -> None:
+    """``topic = param or ''`` then ``if topic:``: the empty default never reaches the call,
+    but the analysis does not decide branches on a partly known value. A known alternative
+    that is no valid name is dropped rather than shown (and reported by ROS006) as the
+    name of an entity; the unknown rest stays."""
+    files = dict(LIDAR)
+    files["lidar/lidar/topics.py"] = """
+        DEFAULT_SCAN_TOPIC = ''
+        DEFAULT_STATUS_TOPIC = 'lidar/status'
+    """
+    assert [e for e in endpoints(write(tmp_path, files))["/lidar_driver"] if e[0] == 14] == [
+        (14, "?", "LaserScan", "")]

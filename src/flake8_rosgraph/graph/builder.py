@@ -276,6 +276,10 @@ class GraphBuilder:
                 types = [None]
             for raw, partial in choices:
                 name, problem = self._resolve(raw, node)
+                if partial and problem:
+                    # A guard the analysis does not decide on a partly known value
+                    # (``if topic:`` after ``topic = param or ''``) keeps it from the call.
+                    continue
                 suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
                     else None
                 out.extend(Entity(kind, name, raw_name=raw, type=type_, qos=qos, callback=callback,
@@ -295,7 +299,8 @@ class GraphBuilder:
             default = json_value(eff.arg("default"))
             return [Entity("parameters", n, raw_name=n, default=default,
                            invalid=_param_problem(n), partial=partial, **common)
-                    for n, partial in _name_choices(eff.arg("name"))]
+                    for n, partial in _name_choices(eff.arg("name"))
+                    if not (partial and _param_problem(n))]  # as for names above
         if eff.kind == "parameters":
             return self._declared_parameters(eff, common)
         return []
