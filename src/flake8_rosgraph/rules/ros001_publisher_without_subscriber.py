@@ -39,7 +39,10 @@ class PublisherWithoutSubscriber(AbsenceRule):
     `/joint_states`, rviz tool topics) are exempt. It also stays quiet when
     some subscription's topic name could not be resolved and its type does
     not rule the match out, and when another alternative of the same
-    creation site (`'a' if sim else 'b'`) is connected.
+    creation site (`'a' if sim else 'b'`) is connected. A topic name known
+    only partly (`param if launched else '/scan'`) is never reported, since
+    its unknown alternative may be subscribed; its known alternative counts
+    as a publisher of that topic for ROS003.
 
     Numbered families (`/robot1/odom` vs `/robot2/odom`, `/cmd` vs `/cmd2`)
     are never near names, nor is one last name in two namespaces
