@@ -153,7 +153,10 @@ class Analysis:
 
     # -- heap -----------------------------------------------------------------------------
     def read(self, key: Hashable, task: Task) -> Value:
-        self.readers.setdefault(key, {})[task] = None
+        readers = self.readers.get(key)
+        if readers is None:
+            readers = self.readers[key] = {}
+        readers[task] = None
         if key[0] == "g" and ("mod", key[1], ()) not in self._known:
             self.enqueue(("mod", key[1], ()))  # a module needed only for its globals
         return self.heap.get(key, BOTTOM)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 import builtins
 import heapq
+from typing import Callable
 
 from .cfg import CFG, Bind, Eval, Return
 from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
@@ -29,6 +30,9 @@ BUILTIN_NAMES = frozenset(dir(builtins))
 
 
 class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts):
+    #: Statement type → its ``s_`` method (``None``: nothing to do), looked up once per type.
+    _executors: dict[type, Callable | None] = {}
+
     def __init__(self, analysis: Analysis) -> None:
         self.an = analysis
         self.program = analysis.program
@@ -36,6 +40,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
+        #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
+        self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
 
     # =====================================================================================
     # tasks and CFGs
@@ -149,17 +155,21 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     # statements
     # =====================================================================================
     def exec_op(self, op) -> None:
-        if isinstance(op, Eval):
+        kind = type(op)
+        if kind is Eval:
             self.eval(op.expr)
-        elif isinstance(op, Bind):
+        elif kind is Bind:
             self.exec_bind(op)
-        elif isinstance(op, Return):
+        elif kind is Return:
             value = const(None) if op.value is None else self.eval(op.value)
             self.frame.ret = self.frame.ret.join(value)
         else:
-            method = getattr(self, "s_" + type(op).__name__, None)
+            try:
+                method = self._executors[kind]
+            except KeyError:
+                method = self._executors[kind] = getattr(type(self), "s_" + kind.__name__, None)
             if method is not None:
-                method(op)
+                method(self, op)
 
     def exec_bind(self, op: Bind) -> None:
         if op.how == "iter":

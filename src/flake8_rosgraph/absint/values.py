@@ -175,7 +175,7 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "soft", "_hash")
+    __slots__ = ("atoms", "soft", "_hash", "_repr")
 
     def __init__(self, items: frozenset | None, soft: bool = False) -> None:
         # ``None`` means ⊤.  ``soft``: these are defaults the environment may override
@@ -184,6 +184,7 @@ class Value:
         self.atoms = items
         self.soft = soft and items is not None
         self._hash = hash((items, self.soft))
+        self._repr: str | None = None
 
     @property
     def depth(self) -> int:
@@ -208,10 +209,15 @@ class Value:
         return self._hash
 
     def __repr__(self) -> str:
-        if self.atoms is None:
-            return "⊤"
-        text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
-        return "~" + text if self.soft else text
+        # Kept once computed: values are immutable, and the engine orders atoms, tasks and
+        # effects by this text (nested values are rendered again for every container).
+        if self._repr is None:
+            if self.atoms is None:
+                self._repr = "⊤"
+            else:
+                text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
+                self._repr = "~" + text if self.soft else text
+        return self._repr
 
     # -- lattice operations ------------------------------------------------
     def join(self, other: "Value") -> "Value":
