@@ -344,9 +344,10 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         frame = self.frame
         if name.startswith("$"):  # the CFG's temporaries (a loop's iterable, a match subject)
             return frame.env.get(name, TOP)
-        for overlay in reversed(frame.comp):
-            if name in overlay:
-                return overlay[name]
+        if frame.comp:
+            for overlay in reversed(frame.comp):
+                if name in overlay:
+                    return overlay[name]
         if frame.cls is not None and name in frame.env:
             return frame.env[name]
         func = frame.func

@@ -278,8 +278,9 @@ def _bounded(items: frozenset, soft: bool = False) -> Value:
 def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     """The value holding exactly ``items`` (⊤ past the bounds)."""
     items = frozenset(items)
-    if any(type(a) in _CONTAINERS and a.depth > MAX_DEPTH for a in items):
-        return TOP
+    for a in items:
+        if type(a) in _CONTAINERS and a.depth > MAX_DEPTH:
+            return TOP
     return _bounded(items, soft)
 
 
@@ -289,7 +290,23 @@ def soften(value: Value) -> Value:
 
 
 def const(value: ConstType) -> Value:
-    return Value(frozenset((Const.of(value),)))
+    # Shared per constant (values are immutable): the engine builds the same few constants
+    # (None, literals of the source) again on every run of every task.
+    key = (type(value), value)
+    try:
+        return _CONSTS[key]
+    except KeyError:
+        made = Value(frozenset((Const.of(value),)))
+        if len(_CONSTS) < _MAX_SHARED_CONSTS:
+            _CONSTS[key] = made
+        return made
+    except TypeError:  # unhashable: never shared
+        return Value(frozenset((Const.of(value),)))
+
+
+#: Bound on :data:`_CONSTS`, so that a long-lived process (a language server) stays bounded.
+_MAX_SHARED_CONSTS = 100_000
+_CONSTS: dict[tuple[type, ConstType], Value] = {}
 
 
 def join_all(values: Iterable[Value]) -> Value:
