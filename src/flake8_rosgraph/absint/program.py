@@ -222,8 +222,7 @@ class Program:
                     scope.generator = True
                 elif isinstance(node, ast.NamedExpr) and isinstance(node.target, ast.Name):
                     scope.bound.add(node.target.id)
-                todo += [(c, scope, prefix, fid, cid) for c in ast.iter_child_nodes(node)
-                         if not isinstance(c, _NOTHING_INSIDE)]
+                todo += [(c, scope, prefix, fid, cid) for c in _child_nodes(node)]
             stack.extend(reversed(todo))
         mod.globals = frozenset(top.bound - top.glob)
         for sc in scopes:
@@ -289,6 +288,20 @@ class Program:
                 return parent
             parent = outer.parent
         return None
+
+
+def _child_nodes(node: ast.AST) -> list[ast.AST]:
+    """``ast.iter_child_nodes(node)`` without the nodes that hold nothing to collect, in the
+    same order; a plain loop over ``_fields``, as this walk visits every node of a module."""
+    out: list[ast.AST] = []
+    for name in node._fields:
+        value = getattr(node, name, None)
+        if isinstance(value, list):
+            out += [item for item in value
+                    if isinstance(item, ast.AST) and not isinstance(item, _NOTHING_INSIDE)]
+        elif isinstance(value, ast.AST) and not isinstance(value, _NOTHING_INSIDE):
+            out.append(value)
+    return out
 
 
 def _statement_imports(program: Program, mod: Module) -> frozenset[str]:
