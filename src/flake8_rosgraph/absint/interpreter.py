@@ -135,7 +135,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             for target, state in targets:
                 old = states.get(target)
                 if old is None:
-                    new = dict(state)
+                    # Shared, not copied: a block's environments are never changed in place
+                    # (a visit works on a copy, joins build new ones).
+                    new = state
                 else:
                     widen = target in cfg.loop_heads and visits.get(target, 0) >= WIDEN_AFTER
                     new = _join_env(old, state, widen)
@@ -428,6 +430,6 @@ def _join_env(old: Env, new: Env, widen: bool) -> Env:
         prev = out.get(name)
         if prev is None:
             out[name] = value
-        else:
+        elif prev is not value:  # a value joined or widened with itself is itself
             out[name] = prev.widen(value) if widen else prev.join(value)
     return out

@@ -101,6 +101,11 @@ class _Scope:
 
 
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+_FUNCTION_NODES = frozenset((ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+#: Node kinds besides names and attributes that bind or declare something in their scope.
+_BINDING_NODES = frozenset((ast.alias, ast.Global, ast.Nonlocal, ast.ExceptHandler, ast.MatchAs,
+                            ast.MatchStar, ast.MatchMapping, ast.Yield, ast.YieldFrom,
+                            ast.NamedExpr))
 #: Node kinds that bind, read and define nothing: not worth a visit.
 _NOTHING_INSIDE = (ast.expr_context, ast.operator, ast.boolop, ast.unaryop, ast.cmpop,
                    ast.Constant, ast.Pass, ast.Break, ast.Continue)
@@ -154,8 +159,9 @@ class Program:
         while stack:
             node, scope, prefix, fid, cid = stack.pop()
             todo: list[tuple] = []
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                lam = isinstance(node, ast.Lambda)
+            kind = type(node)  # ast.parse makes no subclasses of its node types: tests by identity
+            if kind in _FUNCTION_NODES:
+                lam = kind is ast.Lambda
                 name = "<lambda>" if lam else node.name
                 if not lam:
                     scope.bound.add(name)
@@ -177,7 +183,7 @@ class Program:
                 inner.bound.update(x.arg for x in (a.vararg, a.kwarg) if x)
                 body = [node.body] if lam else node.body
                 todo += [(b, inner, func.qualname + ".", func.fid, None) for b in body]
-            elif isinstance(node, ast.ClassDef):
+            elif kind is ast.ClassDef:
                 scope.bound.add(node.name)
                 todo += [(d, scope, prefix, fid, cid)
                          for d in node.decorator_list + node.bases + [k.value for k in node.keywords]]
@@ -187,7 +193,7 @@ class Program:
                 body_scope = _Scope(None)  # class bodies bind class attributes, not locals
                 body_scope.read = scope.read
                 todo += [(b, body_scope, klass.qualname + ".", fid, klass.cid) for b in node.body]
-            elif isinstance(node, _COMPREHENSIONS):
+            elif kind in _COMPREHENSIONS:
                 # The first iterable runs in the enclosing scope; targets stay in the
                 # comprehension (the interpreter evaluates it inline); reads count outside.
                 comp = _Scope(None)
@@ -201,11 +207,14 @@ class Program:
                 elts = [node.key, node.value] if isinstance(node, ast.DictComp) else [node.elt]
                 todo += [(e, comp, prefix, fid, cid) for e in elts]
             else:
-                if isinstance(node, ast.Name):
+                if kind is ast.Name:
                     (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
-                elif isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
-                    self.stored_attrs.add(node.attr)
-                elif isinstance(node, ast.alias):
+                elif kind is ast.Attribute:
+                    if not isinstance(node.ctx, ast.Load):
+                        self.stored_attrs.add(node.attr)
+                elif kind not in _BINDING_NODES:
+                    pass
+                elif kind is ast.alias:
                     if node.name != "*":
                         scope.bound.add((node.asname or node.name).split(".")[0])
                 elif isinstance(node, ast.Global):
