@@ -39,6 +39,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self.lib = analysis.library
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
+        self._extern_mro: dict[str, list] = {}  # library class -> its MRO as Extern atoms
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
         self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
