@@ -27,6 +27,9 @@ from .instances import InstanceFacts
 from .objects import ObjectSemantics
 
 BUILTIN_NAMES = frozenset(dir(builtins))
+#: Expressions whose evaluation may change state (see ``Interpreter._pure_test``).
+_IMPURE_IN_TESTS = (ast.Call, ast.NamedExpr, ast.Await, ast.Yield, ast.YieldFrom, ast.Lambda,
+                    ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts):
@@ -40,6 +43,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
         self._extern_mro: dict[str, list] = {}  # library class -> its MRO as Extern atoms
+        self._pure_tests: dict[int, bool] = {}  # id(branch test) -> see ``_pure_test``
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
         self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
@@ -118,13 +122,21 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             frame.block = bid
             frame.guarded = bool(block.exc_succs)
             frame.env = dict(states[bid])
+            tested: tuple[ast.expr, Value] | None = None
             for op in block.ops:
-                self.exec_op(op)
+                if type(op) is Eval and op is block.ops[-1] and self._pure_test(op.expr):
+                    tested = (op.expr, self.eval(op.expr))
+                else:
+                    self.exec_op(op)
             out = frame.env
             targets: list[tuple[int, Env]] = []
             for edge in block.succs:
                 if edge.test is not None:
-                    decided = self.truth(self.eval(edge.test), by_default=False)
+                    # A branch block ends by evaluating its test; a test without calls or
+                    # assignments gives that same value again on each edge: reused.
+                    value = tested[1] if tested is not None and tested[0] is edge.test \
+                        else self.eval(edge.test)
+                    decided = self.truth(value, by_default=False)
                     if decided is not None and decided != edge.polarity:
                         continue
                 targets.append((edge.target, out))
@@ -149,6 +161,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 if target not in queued:
                     queued.add(target)
                     heapq.heappush(work, target)
+
+    def _pure_test(self, test: ast.expr) -> bool:
+        """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library
+        model may store what a later part reads, a container method mutates), no assignment,
+        no ``await``/``yield``; so evaluating it again right after gives the same value."""
+        pure = self._pure_tests.get(id(test))
+        if pure is None:
+            pure = self._pure_tests[id(test)] = not any(
+                isinstance(node, _IMPURE_IN_TESTS) for node in ast.walk(test))
+        return pure
 
     @staticmethod
     def _scope_name(frame: Frame) -> str:
