@@ -60,9 +60,13 @@ class CallGraph:
         #: Tasks by function (fid), in ``repr`` order; rebuilt if the table grew since.
         self._by_function: dict[int, list[tuple]] = {}
         self._indexed = -1
+        #: Every task in ``repr`` order; rebuilt if the table grew since.
+        self._ordered: list[tuple] | None = None
 
     def tasks(self) -> Iterator[tuple]:
-        return iter(sorted(self._calls, key=repr))
+        if self._ordered is None or len(self._ordered) != len(self._calls):
+            self._ordered = sorted(self._calls, key=repr)
+        return iter(self._ordered)
 
     def sites(self, task: tuple) -> list[CallSite]:
         """The calls ``task`` makes, in source order."""
