@@ -434,3 +434,15 @@ def test_built_at_root(raw, namespace, built):
 ])
 def test_rebuild_in_namespace(raw, code_ns, launch_ns, rebuilt):
     assert rebuild_in_namespace(raw, code_ns, launch_ns) == rebuilt
+
+
+def test_known_suffix_is_what_every_expansion_ends_with():
+    from flake8_rosgraph.graph.names import known_suffix
+
+    assert known_suffix("amcl_pose") == "/amcl_pose"
+    assert known_suffix("scan/filtered") == "/scan/filtered"
+    assert known_suffix("~/status") == "/status"
+    assert known_suffix("/odom") is None        # absolute: known, or not a name at all
+    assert known_suffix("~") is None
+    assert known_suffix("{node}/state") is None
+    assert known_suffix(None) is None

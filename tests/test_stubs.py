@@ -33,9 +33,10 @@ SHIPPED_NAMES = [name for name, _ in SHIPPED]
 #: The arguments the graph builder reads, per effect kind (docs/stubs.md, "Effects").
 EFFECT_ARGS: dict[str, frozenset[str]] = {
     "node": frozenset({"target", "name", "namespace", "allow_undeclared", "auto_declare",
-                        "cli_args"}),
+                        "cli_args", "context", "use_global_arguments"}),
     "publisher": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "via"}),
-    "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via"}),
+    "subscription": frozenset({"node", "topic", "type", "qos", "qos_for_depth", "callback", "via",
+                               "when_true", "in_parameters"}),
     "service": frozenset({"node", "name", "type", "callback", "via"}),
     "client": frozenset({"node", "name", "type", "via", "object", "group"}),
     "action_server": frozenset({"node", "name", "type", "callback", "via"}),
@@ -53,7 +54,7 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "executor_node": frozenset({"executor", "node"}),
     "waits_for": frozenset({"entity"}),
     "rate": frozenset({"node", "frequency", "object"}),
-    "context_init": frozenset({"context"}),
+    "context_init": frozenset({"context", "args"}),
     "context_shutdown": frozenset({"context"}),
     "node_destroy": frozenset({"node"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
@@ -62,7 +63,8 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
 }
 #: Arguments without which an effect of that kind cannot become an entity.
 EFFECT_REQUIRED: dict[str, frozenset[str]] = {
-    "node": frozenset({"target", "name"}),
+    # (a node whose name the library makes at run time, like rqt's pid-suffixed one, has none)
+    "node": frozenset({"target"}),
     **{kind: frozenset({"node", name_arg, "type"}) for kind, (_, name_arg) in ENTITY_KINDS.items()},
     "timer": frozenset({"node", "period"}),
     "parameter": frozenset({"node", "name"}),
@@ -139,6 +141,9 @@ def _model_problems(model: FunctionModel) -> list[str]:
     if model.returns.how == "ref":
         problems += _ref_problems(model.returns.data, params, f"{where}.returns",
                                   allow_return=False)
+    if model.returns.how == "partial":
+        problems += _ref_problems(Ref("arg", model.returns.data), params, f"{where}.returns",
+                                  allow_return=False)
     for name, ref in model.returns.fields:
         problems += _ref_problems(ref, params, f"{where}.returns.{name}", allow_return=False)
     problems += [f"{where}.callbacks: no parameter {c!r}"
@@ -214,8 +219,9 @@ def test_shipped_bases_and_via_classes_are_modelled():
                 if not vias:
                     problems.append(f"{model.qualname}: via must be a const string")
                     continue
-                problems += [f"{model.qualname}: via {v!r} is not a modelled class"
-                             for v in vias if library.canonical(v) not in library.classes]
+                problems += [f"{model.qualname}: via {v!r} is not a modelled class or function"
+                             for v in vias if library.canonical(v) not in library.classes
+                             and library.canonical(v) not in library.functions]
     assert problems == []
 
 
@@ -640,3 +646,8 @@ def test_user_stub_models_a_wrapper_library_the_analyser_cannot_see():
 
 def test_without_the_user_stub_the_wrapper_library_is_invisible():
     assert graph_of("user_wrapper/ws").nodes == []
+
+
+def test_every_shipped_stub_is_in_the_table_of_shipped_models():
+    table = (Path(__file__).parent.parent / "docs" / "stubs.md").read_text(encoding="utf-8")
+    assert [name for name in SHIPPED_NAMES if f"`{name}`" not in table] == []

@@ -176,3 +176,45 @@ def test_unknown_node_name_keeps_relative_topics(tmp_path: Path) -> None:
     (node,) = graph.nodes
     assert node.name is None and node.namespace == "/fleet"
     assert sorted(e.name or "?" for e in node.entities) == ["/fleet/heartbeat", "?"]
+
+
+ROS1_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="2"><name>{name}</name><version>0.1.0</version><description>d</description>
+<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<buildtool_depend{condition}>catkin</buildtool_depend><exec_depend>rospy</exec_depend></package>
+"""
+
+
+def test_ros1_packages_and_ignored_folders_are_left_out_and_said(tmp_path: Path) -> None:
+    ws = write(tmp_path / "ws", {
+        "src/legacy_driver/package.xml": ROS1_PACKAGE_XML.format(name="legacy_driver", condition=""),
+        "src/legacy_driver/scripts/driver.py": "import rospy\nrospy.init_node('driver')\n",
+        "src/both/package.xml": ROS1_PACKAGE_XML.format(name="both", condition=' condition="$ROS_VERSION == 1"'),
+        "src/both/both/__init__.py": "",
+        "src/both/both/node.py": BASE,
+        "src/unsure/package.xml": ROS1_PACKAGE_XML.format(name="unsure", condition=' condition="$ROS_DISTRO == noetic"'),
+        "src/unsure/unsure/node.py": BASE,
+        "src/old/COLCON_IGNORE": "",
+        "src/old/pattern/node.py": BASE,
+    })
+    workspace = load_workspace(ws)
+    assert sorted(m.path for m in workspace.modules) == [
+        "src/both/both/__init__.py", "src/both/both/node.py", "src/unsure/unsure/node.py"]
+    said = {(d.path, d.severity): d.message for d in workspace.diagnostics}
+    assert said == {
+        ("src/legacy_driver/package.xml", "info"):
+            "ROS 1 (catkin) package 'legacy_driver': not analysed (the rules check ROS 2 code)",
+        ("src/old/COLCON_IGNORE", "info"): "COLCON_IGNORE: the build leaves this folder out; not analysed",
+    }
+
+
+def test_manifest_conditions_as_a_ros2_build_sees_them() -> None:
+    from flake8_rosgraph.manifest import condition_holds
+
+    assert condition_holds(None) is True
+    assert condition_holds("$ROS_VERSION == 2") is True
+    assert condition_holds("$ROS_VERSION == 1") is False
+    assert condition_holds("$ROS_VERSION != 1 and $ROS_VERSION == 2") is True
+    assert condition_holds("$ROS_VERSION == 1 or $ROS_DISTRO == humble") is None
+    assert condition_holds("$ROS_VERSION == 1 and $ROS_DISTRO == humble") is False
+    assert condition_holds("($ROS_VERSION == 2)") is None

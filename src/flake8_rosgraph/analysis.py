@@ -19,6 +19,7 @@ from .absint.program import Program
 from .escaping import escape_text
 from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph, RosNode
+from .interfaces.catalogue import generated_class_identity
 from .options import Buffers
 from .registrations import registered_classes
 from .safe_io import read_text
@@ -42,6 +43,7 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
         except (OSError, UnicodeDecodeError) as exc:
             diagnostics.append(Diagnostic(str(path), 1, f"cannot read stub file: {exc}", "error"))
     library = load_library(texts)
+    library.class_identity = generated_class_identity
     diagnostics.extend(Diagnostic(err.split(":", 1)[0], 1, "stub: " + err, "error")
                        for err in library.errors)
     return library, diagnostics

@@ -214,7 +214,7 @@ class InputDigests:
 def _cpp_key(digests: InputDigests) -> str:
     """The key of the C++ partner ends: the C++ files and the folders that make packages."""
     from .cpp import memo as cpp_memo  # imported here: a warm run never needs the C++ front end
-    from .cpp.sources import IGNORE_MARKERS
+    from .workspace import IGNORE_MARKERS
 
     digest = hashlib.sha256(f"rosgraph-cpp/{cpp_memo.MEMO_FORMAT}\0{tool_fingerprint()}\0"
                             f"{_parser_versions()}".encode())

@@ -116,26 +116,32 @@ def _noqa_suppresses(line: str | None, code: str) -> bool:
 class _Selection:
     """``--select``/``--extend-select``/``--ignore`` over ROS codes, as in flake8 (longest match wins).
 
-    A flag given on the command line wins over the configuration files' value.
+    A flag given on the command line wins over the configuration files' value. The files
+    are shared with flake8 and its other plugins: of their codes only this tool's count
+    (``ROS…``), so ``select = E,F,W`` or ``extend-ignore = E203`` there leave the ROS rules
+    as they are by default.
     """
 
     def __init__(self, args: argparse.Namespace, rules: Any, config: FileConfig) -> None:
+        def configured(name: str) -> list[str]:
+            return [code for code in config.values.get(name, []) if _is_ours(code)]
+
         def pick(name: str) -> list[str]:
             given = _codes(getattr(args, name))
-            return given if given else list(config.values.get(name, []))
+            return given if given else configured(name)
 
         select, extend = pick("select"), pick("extend_select")
         self.select = (select or ["ROS"]) + extend
-        self.ignore = pick("ignore") + list(config.values.get("extend_ignore", []))
+        self.ignore = pick("ignore") + configured("extend_ignore")
         self.codes = CodeFilter.build(select + extend, rules)
         self.given = select + extend + self.ignore
 
     def unknown(self, rules: Any) -> list[str]:
         """Given codes that name no rule of this tool (``ROS999``, ``ROS01X``): a typo that selects nothing.
 
-        flake8 rejects a malformed code; here every code is one of ours, so an
-        entry that is not a prefix of any rule code is refused, from the command
-        line or from a configuration file alike.
+        flake8 rejects a malformed code; on this tool's command line every code is
+        one of ours, so an entry that is not a prefix of any rule code is refused, and
+        so is a ``ROS…`` code of a configuration file that names no rule.
         """
         codes = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
         return sorted({c for c in self.given if not any(code.startswith(c) for code in codes)})
@@ -144,6 +150,16 @@ class _Selection:
         selected = max((len(s) for s in self.select if code.startswith(s)), default=-1)
         ignored = max((len(s) for s in self.ignore if code.startswith(s)), default=-1)
         return selected > ignored and self.codes(code)
+
+
+#: What every code of this tool starts with.
+_CODE_PREFIX = "ROS"
+
+
+def _is_ours(code: str) -> bool:
+    """Whether a code of a shared configuration file is meant for this tool (``ROS``,
+    ``ROS1``, ``ROS107``; ``R`` and ``RO`` select it too)."""
+    return bool(code) and (code.startswith(_CODE_PREFIX) or _CODE_PREFIX.startswith(code))
 
 
 class UserError(Exception):

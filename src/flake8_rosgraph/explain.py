@@ -23,10 +23,11 @@ from typing import Iterable
 
 from .absint.engine import Analysis, Effect
 from .absint.library import FunctionModel, LibraryModel
-from .absint.objects import analysed_user_bases
+from .absint.objects import analysed_unresolved_base, analysed_user_bases
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS
 from .graph.model import RosGraph
+from .graph.parameter_switches import switched_off
 
 #: Effect kinds that put something in the graph a user looks for (parameters are listed
 #: by their own declarations and are not creation sites).
@@ -119,9 +120,10 @@ class _Explainer:
         self.library = analysis.library
         self.callables = creation_callables(self.library)
         self._subclasses: dict[int, list[int]] | None = None
+        self._class_ids: dict[int, int] | None = None  # id(ClassDef) -> cid, built when needed
         self.effects: dict[tuple[str, int, int], list[Effect]] = {}
         for eff in analysis.all_effects():
-            if eff.kind in CREATION_KINDS:
+            if eff.kind in CREATION_KINDS and not switched_off(eff):
                 self.effects.setdefault((eff.path, eff.line, eff.column), []).append(eff)
         self.graph_nodes: dict[tuple, list] = {}
         self.graph_entities: dict[tuple, list] = {}
@@ -168,6 +170,8 @@ class _Explainer:
             return dotted, model
         if isinstance(func, ast.Attribute):
             if func.attr in self.callables.methods:
+                if self._own_method(func, klass):
+                    return None  # a wrapper of the workspace's own: the call inside it is the site
                 return _label(func), self._method_model(func.attr)
             if func.attr == "__init__" and klass is not None and _is_super_call(func.value, klass):
                 for base in klass.bases:
@@ -175,6 +179,24 @@ class _Explainer:
                     if qual and any(c in self.callables.constructors for c in self.library.mro(qual)):
                         return _label(func), self.library.method(qual, "__init__")
         return None
+
+    def _own_method(self, func: ast.Attribute, klass: ast.ClassDef | None) -> bool:
+        """Whether ``self.<name>`` in ``klass`` calls a method the workspace defines on the class
+        or a workspace base class (a plugin's ``create_client`` forwarding to its node's)."""
+        if klass is None or not isinstance(func.value, ast.Name) or func.value.id not in ("self", "cls"):
+            return False
+        if self._class_ids is None:
+            self._class_ids = {id(c.node): c.cid for c in self.program.classes}
+        todo, seen = [self._class_ids.get(id(klass))], set()
+        while todo:
+            cid = todo.pop()
+            if cid is None or cid in seen:
+                continue
+            seen.add(cid)
+            if func.attr in self.program.classes[cid].methods:
+                return True
+            todo.extend(analysed_user_bases(self.an.heap, cid))
+        return False
 
     def _in_workspace(self, dotted: str | None, imports: dict[str, str]) -> bool:
         head, _, _ = (dotted or "").partition(".")
@@ -214,6 +236,9 @@ class _Explainer:
         reasons = list(unknowns)
         for unknown in unknowns:
             field = unknown.removeprefix("unknown ")
+            if field == "node":
+                reasons.extend(self._presumed_reasons(key))
+                continue
             found = self._owner_reasons(key) if field == "name" else []
             if not found:  # the written value itself is unknown
                 argument = self._field_argument(call, model, effects, field)
@@ -247,6 +272,8 @@ class _Explainer:
                 out.append("unknown name")
             if any(e.kind != "timers" and e.type is None for _, e in found):
                 out.append("unknown type")
+            if any(n.unresolved_base for n, _ in found):
+                out.append("unknown node")
         return out
 
     def _why_not_created(self, module: Module, call: ast.Call, scope: ast.AST | None) -> list[str]:
@@ -267,7 +294,16 @@ class _Explainer:
             return ["the analysis never reaches this line (every path to it goes through a "
                     "branch, exception or call the analysis decided cannot get here)"]
         receiver = call.func.value if isinstance(call.func, ast.Attribute) else call.func
+        on_self = func is not None and func.cls is not None and isinstance(receiver, ast.Name) \
+            and receiver.id == "self"
         reasons = [f"`{_short(receiver)}` is not known to be a modelled library object here"]
+        stand_in = self.library.stand_in(call.func.attr) if on_self else None
+        model = self.library.method(stand_in.owner, call.func.attr) if stand_in else None
+        base = analysed_unresolved_base(self.an.heap, self.library, func.cls) if model else None
+        if base is not None:
+            reasons.append(f"the base class {base} is not resolved (imported from a library no stub "
+                           f"models), and this call does not have the shape of {model.qualname} "
+                           "(its arguments' number, names and kinds)")
         return reasons + self._origin_reasons(call, scope, receiver, module)
 
     def _never_called(self, func: Function) -> str:
@@ -326,10 +362,19 @@ class _Explainer:
         fid = self.program.fid_of.get(id(scope))
         return None if fid is None else self.program.functions[fid]
 
+    def _presumed_reasons(self, key: tuple) -> list[str]:
+        """Why the node of an entity is unknown: its class's base class is not resolved."""
+        return [f"class {node.cls} is presumed to be a node: its base class {node.unresolved_base} "
+                "is not resolved (imported from a library no stub models), so its name and "
+                "namespace are unknown; a stub for the base class gives them"
+                for node, _ in self.graph_entities.get(key, []) if node.unresolved_base]
+
     def _owner_reasons(self, key: tuple) -> list[str]:
         """Why a name written in full came out unknown: the node it is relative to."""
         relative, private = set(), set()
         for node, ent in self.graph_entities.get(key, []):
+            if node.unresolved_base:
+                continue  # said by the "unknown node" reason
             if ent.name is None and ent.raw_name is not None:
                 if node.namespace is None:
                     relative.add(ent.raw_name)

@@ -21,6 +21,7 @@ from .absint.program import Module
 from .graph.model import Diagnostic
 from .options import Buffers
 from .cmake import cmake_commands
+from .manifest import parse_manifest
 from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes, read_head
 
 #: On Python 3.10, a line with more call/attribute/subscript links than this is not parsed
@@ -53,20 +54,59 @@ _CFG_PACKAGE_DIR = re.compile(r"^package_dir\s*=\s*\n?\s*=\s*([\w./-]+)", re.MUL
 MAX_BUILD_FILE_BYTES = 256 * 1024
 
 
-def python_files(root: Path) -> list[Path]:
+#: Marker files that tell the ROS build tools (colcon, ament, catkin) to leave a folder out.
+IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+#: A package.xml larger than this is not read to tell ROS 1 from ROS 2 (the package stays in).
+MAX_MANIFEST_BYTES = 256 * 1024
+
+
+def left_out(folder: Path, filenames: list[str], root: Path) -> Diagnostic | None:
+    """Why the subtree at ``folder`` is not part of the ROS 2 workspace (``None``: it is).
+
+    A folder with an ignore marker is not built; a catkin package is ROS 1 code — rospy
+    nodes, genpy messages that take ints for floats and positional arguments, roslaunch
+    XML — which the ROS 2 rules would misjudge. Every walker prunes the same subtrees,
+    so the Python modules, launch files and packages of the workspace agree.
+    """
+    marker = next((m for m in IGNORE_MARKERS if m in filenames), None)
+    if marker is not None:
+        return Diagnostic(relative(folder / marker, root), 1,
+                          f"{marker}: the build leaves this folder out; not analysed", "info")
+    if "package.xml" not in filenames:
+        return None
+    text = _small_text(folder / "package.xml", MAX_MANIFEST_BYTES)
+    try:
+        manifest = parse_manifest(text) if text is not None else None
+    except Exception:  # an unreadable manifest is reported by the package reader
+        return None
+    if manifest is not None and manifest.is_ros1:
+        return Diagnostic(relative(folder / "package.xml", root), 1,
+                          f"ROS 1 (catkin) package '{manifest.name}': not analysed "
+                          "(the rules check ROS 2 code)", "info")
+    return None
+
+
+def python_files(root: Path, skipped: list[Diagnostic] | None = None) -> list[Path]:
     """The Python files under ``root`` (or ``root`` itself), sorted, build folders skipped:
     every ``*.py``, and executables without the suffix — files with a Python shebang and
     files a build file installs as scripts (setup.py/setup.cfg ``scripts``, CMake
-    ``install(PROGRAMS …)``) — which ROS packages ship as nodes."""
+    ``install(PROGRAMS …)``) — which ROS packages ship as nodes. Subtrees the workspace
+    leaves out (:func:`left_out`) are pruned, each one of ``skipped``."""
     if root.is_file():
         return [root]
     found: list[Path] = []
     listed: set[Path] = set()  # build files sit above their scripts: walked first (top-down)
     for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=None):
+        folder = Path(dirpath)
+        why = left_out(folder, filenames, root)
+        if why is not None:
+            dirnames[:] = []
+            if skipped is not None:
+                skipped.append(why)
+            continue
         dirnames[:] = sorted(d for d in dirnames
                              if d not in SKIP_DIRS and not d.startswith(".")
                              and not d.endswith(".egg-info"))
-        folder = Path(dirpath)
         listed |= _listed_scripts(folder, filenames)
         for name in sorted(filenames):
             path = folder / name
@@ -205,7 +245,7 @@ def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
     diagnostics: list[Diagnostic] = []
     names: set[str] = set()
     unsaved = dict(buffers)
-    for path in python_files(root):
+    for path in python_files(root, diagnostics):
         result = read_module(path, root, unsaved.get(os.path.abspath(path)))
         if isinstance(result, Diagnostic):
             diagnostics.append(result)

@@ -28,6 +28,7 @@ FILES = {
                 helpers.shout('y')
             except ValueError:
                 pass
+            helpers.shout(flag)
     """,
 }
 
@@ -50,6 +51,7 @@ def test_calls_to_workspace_functions_and_library_models_are_recorded(tmp_path):
         (9, "task", "fetch", False, False),
         (11, "task", "shout", True, False),
         (13, "task", "shout", False, True),
+        (16, "task", "shout", False, False),
     ]
     create_client = sites[1]
     assert create_client.text() == "node.create_client"
@@ -75,6 +77,7 @@ def test_a_body_that_may_end_without_return_is_noted(tmp_path):
     fetch = graph.tasks_of(_function(analysis, "fetch"))
     unknown = [t for t in shout if t[2][0].is_top]
     known = [t for t in shout if not t[2][0].is_top]
+    # shout(flag) with flag unknown may fall off the end.
     assert unknown and all(task in analysis.falls_off for task in unknown)
     # shout('x') decides `if text:`: the path that falls off the end is never taken.
     assert known and not any(task in analysis.falls_off for task in known)

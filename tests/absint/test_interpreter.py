@@ -274,3 +274,48 @@ def test_a_for_loop_inside_a_function_iterates_its_elements(analyse):
         f()
     """})
     assert sorted(a.strings("m", "last")) == ["x", "y"]
+
+
+def test_generated_message_classes_know_their_module_and_name(analyse):
+    """rosidl names the module of ``nav_msgs.msg.Path`` ``nav_msgs.msg._path``: dispatch on it is decided."""
+    a = analyse({"m.py": """
+        from nav_msgs.msg import Path
+        from sensor_msgs import msg as sensors
+        from std_srvs.srv import SetBool
+
+        plan = Path()
+        module = plan.__module__
+        name = type(plan).__name__
+        via_class = plan.__class__.__name__
+        cloud = sensors.PointCloud2.__module__
+        response = SetBool.Response.__name__
+        is_image = plan.__module__ == 'sensor_msgs.msg._image'
+        listed = plan.__module__ in ('nav_msgs.msg._path', 'nav_msgs.msg._Path')
+        not_listed = plan.__module__ not in ['sensor_msgs.msg._image']
+        import os
+        unknown_class = os.path.__module__
+    """})
+    assert a.strings("m", "module") == ["nav_msgs.msg._path"]
+    assert a.strings("m", "name") == ["Path"]
+    assert a.strings("m", "via_class") == ["Path"]
+    assert a.strings("m", "cloud") == ["sensor_msgs.msg._point_cloud2"]
+    assert a.strings("m", "response") == ["SetBool_Response"]
+    assert a.value("m", "is_image").consts() == [False]
+    assert a.value("m", "listed").consts() == [True]
+    assert a.value("m", "not_listed").consts() == [True]
+    assert a.value("m", "unknown_class").strings() is None  # not a generated class: not invented
+
+
+def test_membership_in_a_tuple_is_decided_only_for_known_items(analyse):
+    a = analyse({"m.py": """
+        import os
+        mode = 'fast' if os.environ.get('X') else 'slow'
+        some = mode in ('fast', 'slow')
+        none = mode in ('off', 'idle')
+        maybe = mode in ('fast', 'off')
+        open_ended = mode in ('off', os.environ.get('Y'))
+    """})
+    assert a.value("m", "some").consts() == [True]
+    assert a.value("m", "none").consts() == [False]
+    assert sorted(a.value("m", "maybe").consts()) == [False, True]
+    assert sorted(a.value("m", "open_ended").consts()) == [False, True]

@@ -270,3 +270,58 @@ def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> N
                 rclpy.spin(Driver())
         """,
     }))
+
+
+def test_calls_of_the_workspaces_own_wrappers_are_not_sites(tmp_path: Path) -> None:
+    """A plugin base class forwarding ``create_client`` to its node (mavros' ``PluginModule``):
+    the site is the forwarding call inside the wrapper, not each plugin's call of the wrapper."""
+    write(tmp_path, {
+        "uav/package.xml": PACKAGE_XML.format(name="uav"),
+        "uav/setup.py": """
+            from setuptools import setup
+            setup(name='uav', packages=['uav'],
+                  entry_points={'console_scripts': ['uav = uav.client:main']})
+        """,
+        "uav/uav/__init__.py": "",
+        "uav/uav/plugin.py": """
+            from std_srvs.srv import Trigger
+
+
+            class PluginModule:
+                def __init__(self, node):
+                    self._node = node
+
+                def create_client(self, srv_type, name):
+                    return self._node.create_client(srv_type, '/uav/' + name)  # ok
+
+                def own_trigger(self):
+                    return self.create_client(Trigger, 'reset')
+        """,
+        "uav/uav/client.py": """
+            import rclpy
+            from rclpy.node import Node
+            from std_srvs.srv import SetBool, Trigger
+
+            from uav.plugin import PluginModule
+
+
+            class Arming(PluginModule):
+                def arm(self):
+                    return self.create_client(SetBool, 'arming')
+
+
+            class Bare(Node):
+                def __init__(self):
+                    super().__init__('bare')  # ok
+                    self.create_client(Trigger, 'land')  # ok
+
+
+            def main():
+                rclpy.init()
+                node = rclpy.create_node('uav_client')  # ok
+                Arming(node).arm()
+                PluginModule(node).own_trigger()
+                rclpy.spin(Bare())
+        """,
+    })
+    check(tmp_path)

@@ -208,3 +208,17 @@ def test_debug_shows_the_traceback(ws: Path, tmp_path: Path) -> None:
     loud = tool("check", str(ws), f"--root={missing}", "--debug", cwd=ws)
     assert loud.returncode == 2 and "Traceback (most recent call last)" in loud.stderr, loud.explain()
     assert "no such folder" in loud.stderr
+
+
+def test_other_plugins_codes_in_the_shared_configuration_are_not_ours(ws: Path) -> None:
+    """A repository's .flake8 selects and ignores pycodestyle/bugbear codes for flake8; ``check``
+    keeps its ROS rules as they are, and still refuses a ROS code there that names no rule."""
+    (ws / ".flake8").write_text("[flake8]\nselect = E,F,W,C,B590\nextend-ignore = W503, E203, E501\n")
+    done = tool("check", str(ws), cwd=ws)
+    assert done.returncode == 1 and "ROS201" in done.stdout, done.explain()
+    (ws / ".flake8").write_text("[flake8]\nextend-select = ROS010\nignore = E203, ROS2\n")
+    done = tool("check", str(ws), cwd=ws)
+    assert done.returncode in (0, 1) and "ROS201" not in done.stdout, done.explain()
+    (ws / ".flake8").write_text("[flake8]\nextend-ignore = E203, ROS99\n")
+    done = tool("check", str(ws), cwd=ws)
+    assert done.returncode == 2 and "unknown rule code(s): ROS99" in done.stderr, done.explain()

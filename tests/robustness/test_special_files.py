@@ -126,8 +126,8 @@ def test_file_deleted_during_the_run(workspace: Path, monkeypatch: pytest.Monkey
     vanishing.write_text("import rclpy\nrclpy.create_node('vanishing_node')\n")
     listed = ws_module.python_files
 
-    def list_then_delete(root: Path) -> list[Path]:
-        files = listed(root)
+    def list_then_delete(root: Path, *rest) -> list[Path]:
+        files = listed(root, *rest)
         assert vanishing in files
         vanishing.unlink()
         return files
@@ -148,8 +148,8 @@ def test_file_replaced_by_a_folder_during_the_run(workspace: Path, monkeypatch: 
     shifting.write_text("import rclpy\n")
     listed = ws_module.python_files
 
-    def list_then_replace(root: Path) -> list[Path]:
-        files = listed(root)
+    def list_then_replace(root: Path, *rest) -> list[Path]:
+        files = listed(root, *rest)
         shifting.unlink()
         shifting.mkdir()
         return files

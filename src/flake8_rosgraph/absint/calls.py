@@ -17,11 +17,11 @@ from .callgraph import CallSite
 from .engine import Effect
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
-from .library import FunctionModel, Ref, ReturnSpec
+from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
-                     Extern, ExternBound, FuncAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
+                     Extern, ExternBound, FuncAtom, Obj, Partial, Record, Seq, SuperAtom, Value, atoms,
                      const, join_all, soften)
 
 
@@ -61,7 +61,7 @@ class CallSemantics:
         """Callables passed to unknown code may be called by it: analyse them as entries."""
         for value in list(args.pos) + list(args.kw.values()):
             for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod)):
+                if isinstance(atom, (FuncAtom, BoundMethod, Partial)):
                     self.schedule_callback(atom)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
@@ -75,6 +75,8 @@ class CallSemantics:
             return self.call_extern(atom.qualname, args, node)
         if isinstance(atom, ExternBound):
             return self.call_bound_extern(atom, args, node)
+        if isinstance(atom, Partial):
+            return self._call_atom(atom.func, _applied(atom, args), node)
         return TOP
 
     # -- user code ----------------------------------------------------------------------------
@@ -171,11 +173,21 @@ class CallSemantics:
         return frame.cls is None and frame.block not in frame.dominators
 
     def schedule_callback(self, atom: Atom) -> None:
-        if isinstance(atom, FuncAtom):
-            self.an.schedule(self.an.function_task(atom.fid, self.default_context(atom.fid, None)))
-        elif isinstance(atom, BoundMethod):
-            self.an.schedule(self.an.function_task(
-                atom.fid, self.default_context(atom.fid, atom.receiver)))
+        """Analyse a callable that the library (or unknown code) calls later, as an entry:
+        its parameters take their defaults, or unknown values where the caller passes them;
+        a partial's bound arguments fill the parameters they bind."""
+        bound = Args([], {}, False)
+        while isinstance(atom, Partial):
+            bound = _applied(atom, bound)
+            atom = atom.func
+        if not isinstance(atom, (FuncAtom, BoundMethod)):
+            return
+        receiver = atom.receiver if isinstance(atom, BoundMethod) else None
+        ctx = self.bind_user(self.program.functions[atom.fid], receiver, bound) \
+            if bound.pos or bound.kw or bound.star else None
+        if ctx is None:
+            ctx = self.default_context(atom.fid, receiver)
+        self.an.schedule(self.an.function_task(atom.fid, ctx))
 
     def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
         obj = Obj(self._site(node), cls)
@@ -230,14 +242,50 @@ class CallSemantics:
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+        given = self._framework_arguments(obj, cid)
         for atom in init or ():
-            if isinstance(atom, BoundMethod):
+            if isinstance(atom, BoundMethod) and given:
+                func = self.program.functions[atom.fid]
+                ctx = self.bind_user(func, atom.receiver, Args(given, {}, False))
+                self.an.schedule(self.an.function_task(
+                    atom.fid, ctx if ctx is not None else self.default_context(atom.fid, atom.receiver)))
+            elif isinstance(atom, BoundMethod):
                 self.schedule_callback(atom)
         for lib_cls in self.library_bases(cid):
             for name in self.lib.called_methods(lib_cls):
                 for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+
+    def _framework_arguments(self, obj: Obj, cid: int) -> list[Value]:
+        """What the framework passes when it instantiates ``obj`` (``entry_args`` of its first
+        library base that declares some): a new object per argument, made by its modelled
+        ``__init__`` with no arguments at the class definition (an rqt plugin's context).
+        Their effects belong to a task of their own, ``("framework", module, (class,))``:
+        no task of the workspace runs that code."""
+        klass = self.program.classes[cid]
+        for lib_cls in self.library_bases(cid):
+            model = self.lib.classes.get(lib_cls)
+            if model is None or not model.entry_args:
+                continue
+            outer = self.frame
+            # The framework always makes them: nothing here is conditional.
+            self.frame = Frame(("framework", klass.module.name, (klass.qualname,)), klass.module,
+                               dominators=frozenset({0}))
+            out = []
+            try:
+                for index, qualname in enumerate(model.entry_args):
+                    qualname = self.lib.canonical(qualname)
+                    arg = Obj(f"{obj.site}#arg{index}", Extern(qualname))
+                    init = self.lib.method(qualname, "__init__")
+                    if init is not None:
+                        self.apply_model(init, arg, Args([], {}, False), klass.node)
+                    out.append(atoms([arg]))
+                self.an.effects[self.frame.task] = self.frame.effects
+            finally:
+                self.frame = outer
+            return out
+        return []
 
     def _site(self, node) -> str:
         """The allocation site of an object created at ``node``: the source position, plus
@@ -294,10 +342,33 @@ class CallSemantics:
         if model is None:
             self._escape(args)
             return TOP
-        return self.apply_model(model, atom.receiver, args, node)
+        receiver = atom.receiver
+        if isinstance(receiver, Obj) and Extern(owner) not in self.mro(receiver.cls):
+            return self._call_stand_in(model, owner, receiver, args, node)
+        return self.apply_model(model, receiver, args, node)
 
-    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args") -> dict:
-        """Arguments of a library call by parameter name (⊥ arguments count as unknown)."""
+    def _call_stand_in(self, model: FunctionModel, owner: str, receiver: Obj, args: "Args",
+                       node) -> Value:
+        """A method the receiver's unresolved base class may provide, modelled by a stand-in
+        (:class:`~.library.StandIn`): the model's effects when the call has its shape, each
+        marked with the base class (``unresolved_base``) so that consumers know the object is
+        only presumed to be what the model describes; otherwise an unknown call."""
+        name = model.qualname.rpartition(".")[2]
+        declared = self.lib.classes.get(owner)
+        spec = declared.stand_in_for_unresolved.get(name) if declared is not None else None
+        base = self.unresolved_base(receiver.cls)
+        if spec is None or base is None or not _has_shape(model, spec, args):
+            self._escape(args)
+            return TOP
+        # An argument the call leaves out is whatever the base class passes, not rclpy's
+        # default: a base may well give its clients a reentrant group or its own QoS.
+        return self.apply_model(model, receiver, args, node,
+                                marks=(("unresolved_base", const(base)),), known_defaults=False)
+
+    def bind_model(self, model: FunctionModel, receiver: Atom | None, args: "Args",
+                   known_defaults: bool = True) -> dict:
+        """Arguments of a library call by parameter name (⊥ arguments count as unknown; so do
+        left-out ones without ``known_defaults``)."""
         params = model.signature.params
         pos = ([atoms([receiver])] if receiver is not None else []) + list(args.pos)
         bound: dict[str, Value] = {}
@@ -306,15 +377,16 @@ class CallSemantics:
             bound[param.name] = value
         extra = pos[len(positional):]
         for param in params:
-            if param.kind == "varargs":
-                bound[param.name] = atoms([Seq("tuple", tuple(extra))])
+            if param.kind == "varargs":  # unknown when ``*seq`` may have added to it
+                bound[param.name] = TOP if args.star else atoms([Seq("tuple", tuple(extra))])
             elif param.kind == "varkw":
-                bound[param.name] = atoms([DictAtom(tuple(
+                bound[param.name] = TOP if args.star else atoms([DictAtom(tuple(
                     (const(k), v) for k, v in sorted(args.kw.items())))])
             elif param.name in args.kw:
                 bound[param.name] = args.kw[param.name]
             elif param.name not in bound:
-                bound[param.name] = TOP if args.star or param.default is None else param.default
+                bound[param.name] = TOP if args.star or param.default is None or not known_defaults \
+                    else param.default
         return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
 
     @staticmethod
@@ -347,15 +419,19 @@ class CallSemantics:
             texts = self._texts[key] = self.argument_texts(model, receiver, node)
         return texts
 
-    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node) -> Value:
-        bound = self.bind_model(model, receiver, args)
+    def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node,
+                    marks: tuple[tuple[str, Value], ...] = (), known_defaults: bool = True) -> Value:
+        """Bind, compute the return value, record the effects (with ``marks`` appended to
+        each one's arguments), perform the stores and schedule the callbacks of a library call
+        (``known_defaults=False``: parameters the call leaves out are unknown)."""
+        bound = self.bind_model(model, receiver, args, known_defaults)
         result = self.model_return(model.returns, bound, receiver, node)
         bound["@return"] = result
         frame = self.frame
         recorded = []
         written = self._argument_texts_at(model, receiver, node) if model.effects else {}
         for index, spec in enumerate(model.effects):
-            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args)
+            values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args
                           if ref.how == "arg" and ref.data in written)
             key = (id(node), model.qualname, index, receiver)
@@ -386,6 +462,8 @@ class CallSemantics:
             return atoms([Record(spec.data, fields)])
         if spec.how == "ref":
             return self.ref(spec.data, bound, receiver)
+        if spec.how == "partial":
+            return _partial(bound.get(spec.data, TOP), {k: self.ref(r, bound, receiver) for k, r in spec.fields})
         return TOP
 
     def ref(self, ref: Ref, bound: dict, receiver: Atom | None) -> Value:
@@ -569,6 +647,50 @@ class CallSemantics:
         return TOP
 
 
+def _has_shape(model: FunctionModel, spec: StandIn, args: "Args") -> bool:
+    """Whether a call (without its receiver) binds to ``model``'s parameters exactly as Python
+    would (no unpacking, no missing or surplus argument, no keyword the method lacks) and
+    gives the parameters ``spec`` names arguments of their kinds."""
+    if args.star:
+        return False
+    params = model.signature.params[1:]  # the receiver is ``self``
+    positional = [p for p in params if p.kind == "pos"]
+    named = {p.name for p in params if p.kind in ("pos", "kwonly")}
+    if len(args.pos) > len(positional) and not any(p.kind == "varargs" for p in params):
+        return False
+    given = {p.name: v for p, v in zip(positional, args.pos)}
+    for key, value in args.kw.items():
+        if key in given or (key not in named and not any(p.kind == "varkw" for p in params)):
+            return False
+        given[key] = value
+    if any(p.default is None and p.kind in ("pos", "kwonly") and p.name not in given
+           for p in params):
+        return False
+    return all(_of_kind(given.get(param), kind) for param, kind in spec.kinds)
+
+
+def _of_kind(value: Value | None, kind: str) -> bool:
+    """Whether an argument has the kind a stand-in requires (``None``: not given)."""
+    optional = kind.endswith("?")
+    kind = kind.rstrip("?")
+    if value is None or value.is_top or value.is_bottom:
+        return optional
+    for atom in value:
+        if kind == "class":
+            ok = isinstance(atom, ClassAtom) or (
+                isinstance(atom, Extern) and atom.qualname.rpartition(".")[2][:1].isupper())
+        elif kind == "function":
+            ok = isinstance(atom, (FuncAtom, BoundMethod))
+        elif kind == "str":
+            ok = isinstance(atom, Const) and isinstance(atom.value, str)
+        else:
+            ok = isinstance(atom, Const) and isinstance(atom.value, (int, float)) \
+                and not isinstance(atom.value, bool)
+        if not ok:
+            return False
+    return True
+
+
 def _argparse_dest(value: Value) -> list[str] | None:
     """argparse's ``dest`` for ``add_argument(*name_or_flags)``: first long option, else first name."""
     out = []
@@ -617,6 +739,42 @@ class Args:
     pos: list
     kw: dict
     star: bool
+
+
+def _partial(func: Value, given: dict[str, Value]) -> Value:
+    """Each callable of ``func`` with the positional arguments of the sequence ``args`` and
+    the keywords of the mapping ``keywords`` bound in front. Arguments that are not a known
+    sequence, or a mapping with string keys, leave every later position unknown: a value
+    is never shifted onto the wrong parameter."""
+    if func.is_top:
+        return TOP
+    args = given.get("args", atoms([Seq("tuple", ())]))
+    keywords = given.get("keywords", atoms([DictAtom(())]))
+    bindings = []
+    for seq in [None] if args.is_top else args:
+        for mapping in [None] if keywords.is_top else keywords:
+            kw = _string_keys(mapping) if isinstance(mapping, DictAtom) else None
+            known = isinstance(seq, Seq) and kw is not None
+            bindings.append((seq.items if isinstance(seq, Seq) else (), kw or (), not known))
+    return atoms(Partial(target, pos, kw, star) for target in func for pos, kw, star in bindings)
+
+
+def _string_keys(mapping: DictAtom) -> tuple[tuple[str, Value], ...] | None:
+    """A dict's items keyed by their single string keys; ``None`` if a key is not one string."""
+    out = []
+    for key, value in mapping.items:
+        names = key.strings()
+        if names is None or len(names) != 1:
+            return None
+        out.append((names[0], value))
+    return tuple(sorted(out, key=lambda kv: kv[0]))
+
+
+def _applied(partial: Partial, args: Args) -> Args:
+    """The arguments a call of ``partial`` with ``args`` passes to what it wraps: the bound
+    positionals first, the caller's keywords over the bound ones (as ``functools.partial``)."""
+    pos = list(partial.args) + ([] if partial.star else list(args.pos))
+    return Args(pos, {**dict(partial.kw), **args.kw}, partial.star or args.star)
 
 
 def _raise():

@@ -365,14 +365,17 @@ class Analysis:
         return relevant
 
     def _uncalled_functions(self) -> bool:
-        """Module-level functions no analysed code calls: entries, with their defaults."""
-        added = False
-        for func in self.program.functions:
-            if func.parent is None and func.cls is None and func.fid not in self.called \
-                    and func.module.name in self.relevant and not isinstance(func.node, ast.Lambda):
-                self.function_task(func.fid, self._interp.default_context(func.fid, None))
-                added = True
-        return added
+        """Module-level functions no analysed code calls: entries, with their defaults.
+        Those whose name some code reads wait until no other is left: what calls them (a
+        ``main`` calling ``run('talker')``) may be such an entry and pass the real
+        arguments, which their defaults (or unknowns) must not join."""
+        uncalled = [func for func in self.program.functions
+                    if func.parent is None and func.cls is None and func.fid not in self.called
+                    and func.module.name in self.relevant and not isinstance(func.node, ast.Lambda)]
+        first = [func for func in uncalled if func.node.name not in self.program.read_names] or uncalled
+        for func in first:
+            self.function_task(func.fid, self._interp.default_context(func.fid, None))
+        return bool(first)
 
     def _entry_classes(self) -> bool:
         """Leaf subclasses of ``entry`` library classes, and the classes frameworks

@@ -137,6 +137,8 @@ class ExpressionSemantics:
                     else:
                         out.update((True, False))
             return atoms(Const.of(x) for x in out)
+        if isinstance(op, (ast.In, ast.NotIn)) and left.consts() is not None and not right.is_top:
+            return _membership(left, right, negate=isinstance(op, ast.NotIn))
         return BOOLS
 
     def e_IfExp(self, node: ast.IfExp) -> Value:
@@ -360,3 +362,22 @@ def _const_tuples(value: Value) -> list[tuple] | None:
             if len(out) > MAX_ATOMS:
                 return None
     return out
+
+
+def _membership(left: Value, right: Value, negate: bool) -> Value:
+    """``left in right`` for constants in tuples/lists of known length (``msg.__module__ in
+    ('a', 'b')``): decided where every item that could match is a known constant."""
+    out: set[bool] = set()
+    for container in right:
+        if not isinstance(container, Seq):
+            return BOOLS
+        items = [item.consts() for item in container.items]
+        for value in left.consts() or ():
+            if any(len(item) == 1 and item[0] == value for item in items if item is not None):
+                out.add(not negate)
+            elif all(item is not None and value not in item for item in items):
+                out.add(negate)
+            else:
+                out.update((True, False))
+    return atoms(Const.of(x) for x in out) if out else BOOLS
+

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
-from typing import Any, Iterable
+from typing import Any, Callable, Iterable
 
 try:
     import tomllib
@@ -141,7 +141,9 @@ class StoreSpec:
 @dataclass(frozen=True)
 class ReturnSpec:
     """``how``: "instance" (new object of class ``data``), "record" (a record of class
-    ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), or "unknown"."""
+    ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), "partial" (the callable
+    in parameter ``data`` with the arguments of the parameters named in ``fields`` —
+    ``args``: a sequence, ``keywords``: a mapping — bound in front), or "unknown"."""
 
     how: str
     data: Any = None
@@ -171,6 +173,28 @@ class ClassModel:
     record: bool = False
     entry: bool = False
     calls_methods: tuple[str, ...] = ()
+    #: Methods a workspace class whose base class is unresolved is taken to inherit from
+    #: this model, each with the kinds its arguments must have (see :class:`StandIn`).
+    stand_in_for_unresolved: dict[str, "StandIn"] = field(default_factory=dict)
+    #: Classes the framework constructs (their ``__init__`` applied with no arguments) and
+    #: passes, positionally, when it instantiates a user subclass (an rqt plugin's context).
+    entry_args: tuple[str, ...] = ()
+
+
+#: Kinds a stand-in method's argument may be required to have: a class (a message type),
+#: a function or bound method, a string, a number. A trailing ``?`` lets it be unknown.
+ARGUMENT_KINDS = frozenset({"class", "function", "str", "number"})
+
+
+@dataclass(frozen=True)
+class StandIn:
+    """A modelled method that a workspace class with an unresolved base (imported from a
+    library no stub models) may be calling on itself: only calls that bind to the model's
+    parameter list exactly and whose arguments have ``kinds`` are taken to be it (a
+    ``create_timer(name, 1.0)`` of some other framework is not rclpy's)."""
+
+    owner: str                              # the model class that declares it
+    kinds: tuple[tuple[str, str], ...]      # (parameter, kind[?])
 
 
 @dataclass
@@ -180,8 +204,14 @@ class LibraryModel:
     constants: dict[str, Value] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)
+    #: ``(__module__, __name__)`` of a library class the stubs do not list but whose names
+    #: follow a generator's convention (set by the caller that knows the convention);
+    #: ``None``: unknown. Code dispatching on these names then takes only its true branch.
+    class_identity: Callable[[str], tuple[str, str] | None] = field(
+        default=lambda qualname: None, repr=False)
     _canonical: dict[str, str] = field(default_factory=dict, repr=False)
     _mro: dict[str, list[str]] = field(default_factory=dict, repr=False)
+    _stand_ins: dict[str, StandIn] | None = field(default=None, repr=False)
 
     def canonical(self, qualname: str) -> str:
         """Follow aliases (longest dotted prefix first): ``rclpy.lifecycle.Node`` → ``…LifecycleNode``."""
@@ -236,11 +266,22 @@ class LibraryModel:
             if fn.effects:
                 roots.add(name.split(".")[0])
         for name, cls in self.classes.items():
-            if cls.entry or any(m.effects for m in cls.methods.values()):
+            if cls.entry or cls.entry_args or any(m.effects for m in cls.methods.values()):
                 roots.add(name.split(".")[0])
         roots.update(alias.split(".")[0] for alias, target in self.aliases.items()
                      if target.split(".")[0] in roots)
         return frozenset(roots)
+
+    def stand_in(self, name: str) -> StandIn | None:
+        """The model of method ``name`` for workspace classes whose base is unresolved (the
+        first declaring class by name: stub files are expected to declare each method once)."""
+        if self._stand_ins is None:
+            found: dict[str, StandIn] = {}
+            for cls_name in sorted(self.classes):
+                for method, spec in self.classes[cls_name].stand_in_for_unresolved.items():
+                    found.setdefault(method, spec)
+            self._stand_ins = found
+        return self._stand_ins.get(name)
 
     def method(self, cls_qualname: str, name: str) -> FunctionModel | None:
         for cls in self.mro(cls_qualname):
@@ -263,7 +304,8 @@ class LibraryModel:
 
 # -- loading ----------------------------------------------------------------------------
 _FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "blocking", "blocks_for"}
-_CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods"}
+_CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods", "stand_in_for_unresolved",
+               "entry_args"}
 _TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta"}
 
 
@@ -291,6 +333,14 @@ def _returns(raw: Any, where: str) -> ReturnSpec:
     if isinstance(raw, str):
         return ReturnSpec("instance", raw)
     raw = _table(raw, where)
+    if "partial" in raw:
+        unknown = set(raw) - {"partial", "args", "keywords"}
+        if unknown:
+            raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
+        if not all(isinstance(v, str) for v in raw.values()):
+            raise StubError(f"{where}: partial, args and keywords name parameters")
+        return ReturnSpec("partial", raw["partial"],
+                          tuple(sorted((k, Ref("arg", raw[k])) for k in ("args", "keywords") if k in raw)))
     if "record" in raw:
         unknown = set(raw) - {"record", "fields"}
         if unknown:
@@ -356,7 +406,25 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
             raise StubError(f"{where}.{flag}: expected true or false")
     return ClassModel(qualname, _strings(raw.get("bases", []), where + ".bases"), methods,
                       raw.get("record", False), raw.get("entry", False),
-                      _strings(raw.get("calls_methods", []), where + ".calls_methods"))
+                      _strings(raw.get("calls_methods", []), where + ".calls_methods"),
+                      _stand_ins(qualname, raw.get("stand_in_for_unresolved", {}),
+                                 where + ".stand_in_for_unresolved"),
+                      _strings(raw.get("entry_args", []), where + ".entry_args"))
+
+
+def _stand_ins(owner: str, raw: Any, where: str) -> dict[str, StandIn]:
+    """``{ method = { param = "kind", … }, … }``. A parameter the method lacks is never given,
+    so a required kind on it makes no call match (the method may come from a base class in
+    another stub file, so this is not checked here)."""
+    out = {}
+    for method, kinds in _table(raw, where).items():
+        kinds = _table(kinds, f"{where}.{method}")
+        for param, kind in kinds.items():
+            if not isinstance(kind, str) or kind.rstrip("?") not in ARGUMENT_KINDS:
+                raise StubError(f"{where}.{method}.{param}: expected one of "
+                                f"{', '.join(sorted(ARGUMENT_KINDS))} (optionally with a trailing ?)")
+        out[method] = StandIn(owner, tuple(sorted(kinds.items())))
+    return out
 
 
 def _constant(raw: Any, where: str) -> Value:

@@ -7,9 +7,18 @@ receiver's C3 linearisation.
 from __future__ import annotations
 
 
+import sys
+
 from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
-                     ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms)
+                     ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
+                     const)
 from .calls import Args
+
+#: The attributes that name a class.
+_NAME_ATTRS = ("__module__", "__name__", "__qualname__")
+#: Top-level modules of the standard library (``builtins`` included): an ``abc.ABC`` or
+#: ``threading.Thread`` base is no unresolved library class.
+_STDLIB = frozenset(sys.stdlib_module_names) | {"builtins"}
 
 
 class ObjectSemantics:
@@ -33,12 +42,20 @@ class ObjectSemantics:
             field_value = self.an.read(("a", atom.site, attr), task)
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
+                if attr == "__module__" and field_value.is_bottom and isinstance(atom.cls, Extern):
+                    return self._class_name_attr(atom.cls, attr)
                 if field_value.is_bottom and not attr.startswith("__"):
                     # Python calls ``__getattr__`` for what the object and its class lack: a
                     # wrapper forwarding to the object it holds (``getattr(self._node, name)``).
                     forward = self.class_attr(self.mro(atom.cls), "__getattr__", atom)
                     if forward is not None:
                         return self.call(forward, Args([atoms([Const.of(attr)])], {}, False), None)
+                if field_value.is_bottom:
+                    stand_in = self.lib.stand_in(attr)
+                    if stand_in is not None and isinstance(atom.cls, ClassAtom) \
+                            and self.unresolved_base(atom.cls) is not None:
+                        # Only a call of the right shape is taken for the model's (calls.py).
+                        return atoms([ExternBound(atom, f"{stand_in.owner}.{attr}")])
                 if field_value.is_bottom and not self._all_user(atom.cls) and (
                         attr not in self.program.stored_attrs or isinstance(atom.cls, Extern)):
                     # Nothing here assigns it: the library's attribute. An instance of a
@@ -61,6 +78,8 @@ class ObjectSemantics:
         if isinstance(atom, ModuleAtom):
             return self.import_member(atom.name, attr)
         if isinstance(atom, Extern):
+            if attr in _NAME_ATTRS:
+                return self._class_name_attr(atom, attr)
             model = self.lib.classes.get(atom.qualname)
             if model is not None and self.lib.method(atom.qualname, attr):
                 return atoms([Extern(f"{atom.qualname}.{attr}")])
@@ -79,6 +98,20 @@ class ObjectSemantics:
         if isinstance(atom, (Seq, Coll, DictAtom)):
             return atoms([ExternBound(atom, "builtins.container." + attr)])
         return TOP
+
+    def _class_name_attr(self, cls: Extern, attr: str) -> Value:
+        """``__module__``/``__name__``/``__qualname__`` of a library class, where the library
+        knows them (code that dispatches on them then takes only the branch that runs)."""
+        identity = self.lib.class_identity(cls.qualname)
+        if identity is None:
+            return self.extern(f"{cls.qualname}.{attr}")
+        module, name = identity
+        return const(module if attr == "__module__" else name)
+
+    def unresolved_base(self, cls: Atom) -> str | None:
+        """The first base class of workspace class ``cls`` (along its MRO) that is imported from
+        a library no stub models and that is not the standard library's; ``None`` if none."""
+        return next((b.qualname for b in self.mro(cls) if _unresolved(b, self.lib)), None)
 
     def _all_user(self, cls: Atom) -> bool:
         return all(isinstance(c, ClassAtom) or c == Extern("builtins.object")
@@ -184,6 +217,29 @@ def analysed_user_bases(heap: dict, cid: int) -> list[int]:
     """The workspace base classes of class ``cid``, as the analysis evaluated them."""
     return [a.cid for a in _flatten_bases(heap.get(("bases", cid), BOTTOM))
             if isinstance(a, ClassAtom)]
+
+
+def analysed_unresolved_base(heap: dict, lib, cid: int) -> str | None:
+    """The first unresolved base class (see ``unresolved_base``) of workspace class ``cid`` or
+    of its workspace bases, depth-first, as the analysis evaluated them; for reports."""
+    todo, seen = [cid], set()
+    while todo:
+        cur = todo.pop(0)
+        if cur in seen:
+            continue
+        seen.add(cur)
+        for atom in _flatten_bases(heap.get(("bases", cur), BOTTOM)):
+            if _unresolved(atom, lib):
+                return atom.qualname
+            if isinstance(atom, ClassAtom):
+                todo.append(atom.cid)
+    return None
+
+
+def _unresolved(atom: Atom, lib) -> bool:
+    """A library class no stub models, outside the standard library."""
+    return isinstance(atom, Extern) and atom.qualname not in lib.classes \
+        and atom.qualname.partition(".")[0] not in _STDLIB
 
 
 def _flatten_bases(value: Value) -> list[Atom]:

@@ -126,6 +126,9 @@ class Program:
         #: Attribute names some workspace code assigns (``x.name = …``): any other attribute
         #: of an object with library bases can only come from the library.
         self.stored_attrs: set[str] = set()
+        #: Names and attribute names some workspace code reads (``run``, ``helpers.run``):
+        #: a module function named so may be called by code that is analysed later.
+        self.read_names: set[str] = set()
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
@@ -209,9 +212,10 @@ class Program:
             else:
                 if kind is ast.Name:
                     (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
+                    if isinstance(node.ctx, ast.Load):
+                        self.read_names.add(node.id)
                 elif kind is ast.Attribute:
-                    if not isinstance(node.ctx, ast.Load):
-                        self.stored_attrs.add(node.attr)
+                    (self.read_names if isinstance(node.ctx, ast.Load) else self.stored_attrs).add(node.attr)
                 elif kind not in _BINDING_NODES:
                     pass
                 elif kind is ast.alias:

@@ -155,6 +155,26 @@ class DictAtom:
 
 
 @dataclass(frozen=True)
+class Partial:
+    """A callable with arguments bound in front (``functools.partial(func, *args, **kw)``):
+    calling it, or a library calling it back, passes ``args`` before the caller's own
+    positional arguments and ``kw`` under the caller's keywords, so a callback keeps the
+    values it was registered with. ``star``: more arguments were bound than are known
+    (``partial(f, *names)``), so no parameter's position is known past ``args``."""
+
+    func: "Atom"                               # any callable atom, a Partial included
+    args: tuple["Value", ...]
+    kw: tuple[tuple[str, "Value"], ...]
+    star: bool = False
+    depth: int = field(init=False, compare=False, repr=False, default=0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "depth", 1 + max(
+            [v.depth for v in self.args] + [v.depth for _, v in self.kw] + [getattr(self.func, "depth", 0)],
+            default=0))
+
+
+@dataclass(frozen=True)
 class Record:
     """A library value described field by field by a stub (e.g. a QoS profile)."""
 
@@ -169,7 +189,7 @@ class Record:
 
 
 Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, ExternBound,
-             SuperAtom, Seq, Coll, DictAtom, Record]
+             SuperAtom, Seq, Coll, DictAtom, Partial, Record]
 
 
 class Value:
@@ -261,7 +281,7 @@ class Value:
         return sorted(vals)
 
 
-_CONTAINERS = (Seq, Coll, DictAtom)
+_CONTAINERS = (Seq, Coll, DictAtom, Partial)
 TOP = Value(None)
 BOTTOM = Value(frozenset())
 #: Either boolean: the value of a test the analysis cannot decide.
@@ -287,6 +307,13 @@ def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
 def soften(value: Value) -> Value:
     """The same possibilities, marked as overridable defaults."""
     return value if value.is_top or value.soft else Value(value.atoms, True)
+
+
+def wrapped(atom: Atom) -> Atom:
+    """The callable that ``atom`` calls in the end: through partials, else ``atom`` itself."""
+    while isinstance(atom, Partial):
+        atom = atom.func
+    return atom
 
 
 def const(value: ConstType) -> Value:

@@ -1,7 +1,8 @@
 """Finding and reading the C++ sources of a workspace's ROS packages, within limits.
 
 Only files inside a ROS package (a folder with ``package.xml`` at or above
-them) are read, not those of ``test``/``tests`` folders; folders marked ``COLCON_IGNORE``/``AMENT_IGNORE``/``CATKIN_IGNORE``,
+them) are read, not those of ``test``/``tests`` folders; folders the workspace leaves out
+(ignore markers, ROS 1 packages: :func:`~flake8_rosgraph.workspace.left_out`),
 colcon's ``build``/``install``/``log`` and hidden folders are skipped, symlinked
 folders are not followed, and only regular files are opened. Only files that
 mention ``rclcpp`` are parsed, and those that derive from a node class of such a
@@ -16,13 +17,11 @@ from pathlib import Path
 
 from ..graph.model import Diagnostic
 from ..safe_io import UnsafeFile, read_bytes
-from ..workspace import SKIP_DIRS, relative
+from ..workspace import SKIP_DIRS, left_out, relative
 from . import CPP_SUFFIXES
 
 #: Files larger than this are not read (generated code, not a node).
 MAX_CPP_FILE_BYTES = 1024 * 1024
-#: Marker files that tell ROS build tools to skip a folder.
-IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
 #: Folders of C++ tests (gtest): their nodes drive the package under test, and as partners they
 #: would connect Python ends that nothing connects in a running system.
 TEST_DIRS = frozenset({"test", "tests"})
@@ -44,8 +43,8 @@ def _package_files(root: Path) -> list[tuple[Path, str]]:
     found: list[tuple[Path, str]] = []
     packages: dict[str, str] = {}
     for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
-        if any(marker in filenames for marker in IGNORE_MARKERS):
-            dirnames[:] = []
+        if left_out(Path(dirpath), filenames, root) is not None:
+            dirnames[:] = []  # the Python walk reports the folder
             continue
         dirnames[:] = sorted(d for d in dirnames
                              if d not in SKIP_DIRS and d not in TEST_DIRS and not d.startswith("."))

@@ -203,7 +203,8 @@ class Joiner:
                             continue
                         kept = True
                         entity = Entity(endpoint.kind, name, endpoint.location, raw_name=raw, type=type_,
-                                        qos=dict(endpoint.qos) if endpoint.qos else None, invalid=problem)
+                                        qos=dict(endpoint.qos) if endpoint.qos else None, invalid=problem,
+                                        name_suffix=names.known_suffix(raw) if name is None else None)
                         entities[id(node)].setdefault(_entity_order(entity), entity)
                 if not kept:
                     self.diagnostics.append(Diagnostic(

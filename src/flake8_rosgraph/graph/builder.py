@@ -16,8 +16,10 @@ from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
-                             Seq, Coll, Value)
+                             Seq, Coll, Value, wrapped)
 from . import names
+from .parameter_switches import switched_off
+from .ros_args import CommandLine, command_line, process_command_lines, with_process
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .usage import build_usage
 
@@ -161,12 +163,17 @@ class GraphBuilder:
         self.nodes: dict[tuple, RosNode] = {}          # (location, name, namespace) -> node
         self.by_object: dict[str, list[RosNode]] = {}  # allocation site -> nodes it may be
         self.remaps: dict[int, tuple[names.RemapRule, ...]] = {}  # id(node) -> its cli_args rules
+        self.process_args: dict[Effect, CommandLine] = {}  # node effect -> its rclpy.init arguments
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
+        self.process_args = process_command_lines(self.analysis)
         for eff in effects:
             if eff.kind == "node":
                 self._add_node(eff)
+        for eff in effects:
+            if "unresolved_base" in dict(eff.args):
+                self._add_presumed_node(eff)
         entities: dict[int, dict[tuple, Entity]] = {}
         for eff in effects:
             for node in self._owners(eff):
@@ -204,7 +211,7 @@ class GraphBuilder:
         else:
             ns_choices = [None if ns is None else names.normalize_namespace(ns)
                           for ns in _choices(namespaces)]
-        cli = command_line(eff.arg("cli_args"))
+        cli = with_process(command_line(eff.arg("cli_args")), self.process_args.get(eff))
         name_choices = _choices(eff.arg("name"))
         if cli.name is not None:
             name_choices = [cli.name]
@@ -220,12 +227,29 @@ class GraphBuilder:
                     if node is None:
                         node = self.nodes[key] = RosNode(
                             name, ns, location, _class_name(self.program, obj),
-                            conditional=eff.conditional, invalid=_node_problem(name, ns))
+                            conditional=eff.conditional, invalid=_node_problem(name, ns),
+                            local_overrides=cli.overrides)
                     if cli.remaps:
                         self.remaps[id(node)] = cli.remaps
                     known = self.by_object.setdefault(obj.site, [])
                     if all(n is not node for n in known):
                         known.append(node)
+
+    def _add_presumed_node(self, eff: Effect) -> None:
+        """The node an object of a class with an unresolved base is presumed to be, when the
+        analysis took a call on it for rclpy's (``unresolved_base`` in the effect): one per
+        class, of unknown name and namespace, located at its class definition."""
+        base = (eff.arg("unresolved_base").strings() or [None])[0]
+        for obj in eff.arg("node"):
+            if not isinstance(obj, Obj) or not isinstance(obj.cls, ClassAtom) or obj.site in self.by_object:
+                continue
+            klass = self.program.classes[obj.cls.cid]
+            location = Location(klass.module.path, klass.node.lineno, klass.module.column(klass.node))
+            node = self.nodes.get((location, None, None))
+            if node is None:
+                node = self.nodes[(location, None, None)] = RosNode(
+                    None, None, location, klass.qualname, unresolved_base=base)
+            self.by_object[obj.site] = [node]
 
     def _owners(self, eff: Effect) -> list[RosNode]:
         if eff.kind == "node":
@@ -241,6 +265,8 @@ class GraphBuilder:
     def _entities(self, eff: Effect, node: RosNode) -> list[Entity]:
         location = Location(eff.path, eff.line, eff.column)
         common = dict(location=location, conditional=eff.conditional)
+        if switched_off(eff):
+            return []
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
             type_ = interface_type(eff.arg("type"))
@@ -253,9 +279,12 @@ class GraphBuilder:
             written = dict(eff.texts).get(name_arg)
             for raw in _choices(eff.arg(name_arg)):
                 name, problem = self._resolve(raw, node)
+                suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
+                    else None
                 out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
                                   callback=callback, invalid=problem,
-                                  via=via[0] if via else None, name_text=written, **common))
+                                  via=via[0] if via else None, name_text=written,
+                                  name_suffix=suffix, **common))
             return out
         if eff.kind == "timer":
             callback = self.callback_name(eff.arg("callback"))
@@ -298,7 +327,7 @@ class GraphBuilder:
 
     def callback_name(self, value: Value) -> str | None:
         found = []
-        for atom in value:
+        for atom in map(wrapped, value):
             if isinstance(atom, (FuncAtom, BoundMethod)):
                 found.append(self.program.functions[atom.fid].qualname)
             elif isinstance(atom, ExternBound):
@@ -337,59 +366,6 @@ def resolve_name(raw: str | None, node: RosNode,
         if expanded is None:
             return rule.replacement, check.reason
     return expanded, None if check.ok else check.reason
-
-
-@dataclass(frozen=True)
-class CommandLine:
-    """What a node's ``cli_args`` set: ``__node:=``/``__ns:=`` and remapping rules."""
-
-    name: str | None = None
-    namespace: str | None = None
-    remaps: tuple[names.RemapRule, ...] = ()
-
-
-#: ROS arguments that take a value which is not a remapping (skipped with it).
-_VALUED_ROS_ARGS = frozenset({"-p", "--param", "--params-file", "--log-level", "-e", "--enclave",
-                              "--log-config-file"})
-
-
-def command_line(value: Value) -> CommandLine:
-    """The ``--ros-args`` of a node's ``cli_args``, when they are one list of known strings
-    (anything else changes nothing: an unknown list is almost always empty in practice, and
-    guessing would cost every name of the node)."""
-    seqs = [a for a in value if isinstance(a, Seq)] if not value.is_top else []
-    if len(seqs) != 1 or len(list(value)) != 1:
-        return CommandLine()
-    words = [item.strings() for item in seqs[0].items]
-    if any(w is None or len(w) != 1 for w in words):
-        return CommandLine()
-    name = namespace = None
-    remaps: list[names.RemapRule] = []
-    inside, skip_next, rule_next = False, False, False
-    for (word,) in words:
-        if word == "--ros-args":
-            inside = True
-        elif word == "--":
-            inside = False
-        elif not inside:
-            continue
-        elif skip_next:
-            skip_next = False
-        elif word in ("-r", "--remap"):
-            rule_next = True
-        elif word in _VALUED_ROS_ARGS:
-            skip_next = True
-        elif rule_next and ":=" in word:
-            rule_next = False
-            source, _, target = word.partition(":=")
-            node, _, source = source.rpartition(":") if ":" in source else (None, "", source)
-            if source == "__ns" and not node:
-                namespace = target
-            elif source in ("__node", "__name") and not node:
-                name = target
-            else:
-                remaps.append(names.RemapRule(source, target, node or None))
-    return CommandLine(name, namespace, tuple(remaps))
 
 
 def _class_name(program, obj: Obj) -> str | None:

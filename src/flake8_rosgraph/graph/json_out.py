@@ -55,6 +55,8 @@ def _node(n: RosNode) -> dict[str, Any]:
         out["invalid"] = n.invalid
     if n.language != "python":
         out["language"] = n.language
+    if n.unresolved_base:
+        out["unresolved_base"] = n.unresolved_base
     return out
 
 

@@ -13,7 +13,7 @@ from typing import Any
 
 from ..absint.engine import Analysis, Effect
 from ..absint.instances import CONSTRUCT, GET_ATTRIBUTE, SET_ATTRIBUTE
-from ..absint.values import BoundMethod, Coll, Const, Extern, FuncAtom, Obj, Seq, Value
+from ..absint.values import BoundMethod, Coll, Const, Extern, FuncAtom, Obj, Seq, Value, wrapped
 from .model import Location
 
 _SCALARS = {"bool": "bool", "int": "int", "float": "float", "str": "str", "bytes": "bytes",
@@ -183,7 +183,7 @@ def _service_returns(analysis: Analysis, eff: Effect) -> list[ServiceReturn]:
     if services is None or len(services) != 1:
         return []
     out = []
-    for atom in eff.arg("callback"):
+    for atom in map(wrapped, eff.arg("callback")):
         if not isinstance(atom, (FuncAtom, BoundMethod)):
             continue
         func = analysis.program.functions[atom.fid]

@@ -60,6 +60,11 @@ class Entity:
     via: str | None = None      # library class that implies this entity (tf2_ros, parameter client)
     #: The name as written at the creating call (``prefix + '/scan'``), to say what could not be resolved.
     name_text: str | None = None
+    #: For an unknown ``name``: how it ends when only what rcl puts in front is unknown (the
+    #: namespace of a relative name, the node of a private one) and no remap can change it —
+    #: ``'/amcl_pose'`` for ``'amcl_pose'`` on a node of unknown namespace. An unknown with a
+    #: known end can only be the other end of names that end so.
+    name_suffix: str | None = None
 
 
 @dataclass
@@ -79,6 +84,13 @@ class RosNode:
     #: The language of the code that creates it: ``"python"`` (rclpy, analysed) or ``"cpp"``
     #: (rclcpp, read by :mod:`flake8_rosgraph.cpp` as a partner end for the Python rules).
     language: str = "python"
+    #: What the node's own ``cli_args`` set (``"name"``, ``"namespace"``): rcl reads a node's
+    #: local arguments before the process's, so a launch file's ``name``/``namespace`` do
+    #: not replace them.
+    local_overrides: tuple[str, ...] = ()
+    #: For a node presumed from Node API calls in a class whose base class is not resolved
+    #: (an import no stub models): that base class. Its name and namespace are unknown.
+    unresolved_base: str | None = None
 
     @property
     def fqn(self) -> str | None:

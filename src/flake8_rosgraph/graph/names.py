@@ -359,3 +359,16 @@ def edit_distance(a: str, b: str, limit: int) -> int:
             return over
         previous = current
     return min(previous[-1], over)
+
+
+def known_suffix(raw: str | None) -> str | None:
+    """How every expansion of ``raw`` ends, whatever the namespace and node name rcl puts in
+    front of it: ``'scan'`` and ``'~/scan'`` end in ``'/scan'``; ``None`` for an absolute or
+    unknown name, a bare ``'~'``, and names with substitutions."""
+    if raw is None or raw.startswith("/") or "{" in raw:
+        return None
+    rest = raw[2:] if raw.startswith("~/") else raw
+    if not rest or rest.startswith("~"):
+        return None
+    return "/" + rest.rstrip("/")
+

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from ..absint.callgraph import CallGraph, CallSite
 from ..absint.engine import Analysis, Effect
 from ..absint.program import Function
-from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value
+from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value, wrapped
 from .model import Location
 
 #: Effects that create an entity on their ``node``: they fail on a destroyed node.
@@ -267,7 +267,7 @@ class UsageBuilder:
             on_executor = eff.arg("executor").consts() != [False]
             group = self._group(eff.arg("group"), nodes) if "group" in dict(eff.args) else None
             role = _single_const(eff.arg("role")) or "callback"
-            for atom in eff.arg("function"):
+            for atom in map(wrapped, eff.arg("function")):
                 if not isinstance(atom, (FuncAtom, BoundMethod)):
                     continue
                 func = self.program.functions[atom.fid]
@@ -323,12 +323,9 @@ class UsageBuilder:
                 if site.callee[0] != "lib":
                     continue
                 model = self._model(site.callee[1])
-                returns = model.returns if model else None
-                if returns is None or returns.how != "ref" or returns.data.how != "arg":
+                if model is None or model.returns.how != "partial":
                     continue
-                if not any(p.kind == "varargs" for p in model.signature.params):
-                    continue
-                for atom in site.arg(returns.data.data) or ():
+                for atom in map(wrapped, site.arg(model.returns.data) or ()):
                     if isinstance(atom, (FuncAtom, BoundMethod)):
                         fids.add(atom.fid)
         return frozenset(fids)

@@ -52,6 +52,28 @@ def message_key(qualname: str) -> str | None:
     return f"{match.group('pkg')}/{kind}/{name}_{part}"
 
 
+def generated_class_identity(qualname: str) -> tuple[str, str] | None:
+    """``(__module__, __name__)`` of the Python class rosidl generates for a message type:
+    ``nav_msgs.msg.Path`` → ``("nav_msgs.msg._path", "Path")``, ``std_srvs.srv.SetBool.Response``
+    → ``("std_srvs.srv._set_bool", "SetBool_Response")``; ``None`` for anything else.
+
+    Generic code often dispatches on these (``msg.__module__ == "sensor_msgs.msg._image"``,
+    ``type(msg).__name__ == "Image"``); knowing them keeps a message off the branches written
+    for other types."""
+    key = message_key(qualname)
+    if key is None:
+        return None
+    package, kind, name = key.split("/")
+    base = next((name[:-len(s)] for s in PARTS[kind] if s and name.endswith(s)), name)
+    return f"{package}.{kind}._{_snake_case(base)}", name
+
+
+def _snake_case(name: str) -> str:
+    """rosidl's module name for a type name (``PointCloud2`` → ``point_cloud2``)."""
+    name = re.sub(r"(.)([A-Z][a-z]+)", r"\1_\2", name)
+    return re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", name).lower()
+
+
 def display_name(key: str) -> str:
     """``std_srvs/srv/SetBool_Response`` → ``std_srvs/srv/SetBool.Response`` (as code names it)."""
     pkg, kind, name = key.split("/", 2)

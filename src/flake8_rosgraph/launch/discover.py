@@ -14,7 +14,7 @@ from pathlib import Path
 from ..absint.engine import Analysis
 from ..graph.model import Diagnostic
 from ..safe_io import describe, is_within, read_text
-from ..workspace import SKIP_DIRS
+from ..workspace import SKIP_DIRS, left_out
 from .actions import Action
 from .python_front import ENTRY_FUNCTION, read_python_launch
 from .xml_front import XmlRefused, parse_xml, read_xml_launch
@@ -63,6 +63,11 @@ def frontend_launch_files(root: Path, diagnostics: list[Diagnostic] | None = Non
                                               f"{error.strerror or error}"))
 
     for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
+        why = left_out(Path(dirpath), filenames, root)
+        if why is not None:
+            dirnames[:] = []
+            diagnostics.append(why)
+            continue
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         in_launch_dir = Path(dirpath).name == "launch"
         for name in sorted(filenames):

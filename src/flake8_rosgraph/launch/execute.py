@@ -24,10 +24,10 @@ from pathlib import Path
 from typing import Callable
 
 from ..graph.model import Diagnostic, Location
-from .actions import (Action, DeclareArgument, GroupAction, Include, Join, NodeAction, PkgShare,
-                      PushNamespace, SetConfiguration, SetParameter, SetRemap, Subst, Text, ThisDir,
-                      Unknown, Unsupported, Var)
-from .model import ExecutableRef, LaunchedNode, ParamFileRef, ParamValue, Remap, System
+from .actions import (Action, Condition, DeclareArgument, GroupAction, Include, Join, NodeAction,
+                      PkgShare, PushNamespace, SetConfiguration, SetParameter, SetRemap, Subst, Text,
+                      ThisDir, Unknown, Unsupported, Var)
+from .model import ExecutableRef, Guard, LaunchedNode, ParamFileRef, ParamValue, Remap, System
 from .packages import PackageIndex
 
 #: Include depth at which a (probably recursive) include chain is cut.
@@ -52,10 +52,36 @@ class Scope:
     remaps: list[Remap] = field(default_factory=list)
     params: list[ParamValue] = field(default_factory=list)
     conditional: bool = False
+    #: The conditions every action of this scope runs under (see :func:`guard`).
+    guards: tuple[Guard, ...] = ()
+
+    def guarded(self, condition: Condition | None) -> tuple[Guard, ...]:
+        """The guards of an action of this scope that has ``condition`` of its own."""
+        own = guard(condition)
+        return self.guards + ((own,) if own is not None else ())
 
     def child(self, **changes) -> "Scope":
         return replace(self, configs=dict(self.configs), remaps=list(self.remaps),
                        params=list(self.params), **changes)
+
+
+def guard(condition: Condition | None) -> Guard | None:
+    """``condition`` as a :data:`Guard`: its expression and whether it is negated
+    (``UnlessCondition``, ``unless=``). ``None`` for none, or for an expression the analysis
+    cannot read: two unknown conditions are never known to be each other's negation."""
+    if condition is None or not _readable(condition.expression):
+        return None
+    return condition.expression, condition.negate
+
+
+def _readable(expression: Subst) -> bool:
+    if isinstance(expression, Unknown):
+        return False
+    if isinstance(expression, Join):
+        return all(_readable(part) for part in expression.parts)
+    if isinstance(expression, Var) and expression.default is not None:
+        return _readable(expression.default)
+    return True
 
 
 def prefix_namespace(base: str | None, ns: str | None) -> str | None:
@@ -183,6 +209,7 @@ class Executor:
             inner = scope.child() if action.scoped or action.condition is not None else scope
             if action.condition is not None:
                 inner.conditional = True  # (an unscoped conditional group keeps its changes to itself)
+                inner.guards = scope.guarded(action.condition)
             self.run(action.actions, inner, system, stack)
         elif isinstance(action, PushNamespace):
             try:
@@ -230,7 +257,8 @@ class Executor:
                                  f"{MAX_INCLUDED_FILES} launch files (include budget)"))
             return
         self._files_left -= 1
-        inner = scope.child(file=path, conditional=scope.conditional or action.condition is not None)
+        inner = scope.child(file=path, conditional=scope.conditional or action.condition is not None,
+                            guards=scope.guarded(action.condition))
         if action.arguments is None:
             inner.opaque = True
         else:
@@ -273,6 +301,7 @@ class Executor:
         node = LaunchedNode(package, executable, action.location, scope.file, name, namespace,
                             remaps, params, files,
                             conditional=scope.conditional or action.condition is not None,
+                            guards=scope.guarded(action.condition),
                             lifecycle=action.lifecycle, unresolved=unresolved)
         node.target = self.resolve_target(package, executable)
         return node

@@ -5,7 +5,8 @@ What ``--ros-args`` from launch do when the node starts (rcl ``node.c``,
 
 * ``__node:=`` (the launch ``name``) replaces the node name and ``__ns:=``
   (the launch namespace, pushed namespaces included) the namespace, for
-  every node the executable creates;
+  every node the executable creates — but for what a node's own ``cli_args``
+  set: rcl reads a node's local arguments first;
 * every topic/service/action name is expanded with the *new* name and
   namespace, then the remap rules are tried in order — the scope's
   ``SetRemap`` rules, then the node's own — on the fully expanded name, and
@@ -27,15 +28,33 @@ from .param_files import Section, YamlError, read_param_file
 
 
 def _node_name(launched: LaunchedNode, code: RosNode) -> str | None:
+    if "name" in code.local_overrides:
+        return code.name
     if launched.is_unresolved("name"):
         return None
     return launched.name if launched.name is not None else code.name
 
 
 def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
+    if "namespace" in code.local_overrides:
+        return code.namespace
     if launched.is_unresolved("namespace"):
         return None
     return launched.namespace if launched.namespace is not None else code.namespace
+
+
+def _launched_suffix(entity: Entity, resolved: str | None, rules: list[names.RemapRule],
+                     launched: LaunchedNode) -> str | None:
+    """The known end of a launched entity's unknown name (:attr:`Entity.name_suffix`): none
+    when a launch remap may apply (remaps match the expanded name, unknown here), nor when
+    the code's own remaps changed it (its code-level name does not end so)."""
+    if resolved is not None or rules or launched.is_unresolved("remap"):
+        return None
+    suffix = names.known_suffix(entity.raw_name)
+    if suffix is None or (entity.name is None and entity.name_suffix != suffix) or (
+            entity.name is not None and not entity.name.endswith(suffix)):
+        return None
+    return suffix
 
 
 def launch_info(launched: LaunchedNode) -> dict[str, Any]:
@@ -107,7 +126,9 @@ class Instantiator:
                 before, _ = names.expand_topic_name(entity.raw_name, name, namespace)
                 expanded.add(before or resolved)
             known = known and resolved is not None
-            entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid))
+            suffix = _launched_suffix(entity, resolved, rules, launched)
+            entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid,
+                                    name_suffix=suffix))
         node = RosNode(name, namespace, code.location, code.cls,
                        conditional=code.conditional or launched.conditional,
                        invalid=code.invalid, entities=entities, language=code.language)

@@ -12,7 +12,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..graph.model import Diagnostic, Location, RosNode
+from .actions import Subst
 from .param_files import Section
+
+#: A condition an action runs under: its expression, and whether it is negated.
+Guard = tuple[Subst, bool]
 
 
 @dataclass(frozen=True, order=True)
@@ -95,9 +99,17 @@ class LaunchedNode:
     params: list[ParamValue] = field(default_factory=list)
     param_files: list[ParamFileRef] = field(default_factory=list)
     conditional: bool = False
+    #: The readable conditions it runs under: ``(expression, negated)``. Nodes of one launch
+    #: file under ``if=X`` and ``unless=X`` never run together.
+    guards: tuple[Guard, ...] = ()
     lifecycle: bool = False
     unresolved: list[str] = field(default_factory=list)
     target: ExecutableRef = ExecutableRef("unknown")
+
+    def excludes(self, other: "LaunchedNode") -> bool:
+        """Whether this node and ``other`` (of the same launch) never both start: one runs
+        under a condition the other runs under negated."""
+        return any((expression, not negated) in other.guards for expression, negated in self.guards)
 
     def is_unresolved(self, what: str) -> bool:
         return any(u.split(":", 1)[0] == what for u in self.unresolved)

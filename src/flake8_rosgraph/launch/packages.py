@@ -27,9 +27,10 @@ from pathlib import Path
 from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
 from ..cmake import cmake_commands
+from ..manifest import parse_manifest
 from ..safe_io import describe, is_regular_file, is_within, read_bytes, read_text
-from ..workspace import SKIP_DIRS
-from .xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
+from ..workspace import SKIP_DIRS, left_out
+from .xml_front import XmlRefused
 
 
 @dataclass(frozen=True)
@@ -79,40 +80,16 @@ def package_xml_files(root: Path, diagnostics: list[Diagnostic] | None = None) -
                                                   f"{error.strerror or error}"))
 
     for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
+        why = left_out(Path(dirpath), filenames, root)
+        if why is not None:
+            dirnames[:] = []
+            if diagnostics is not None:
+                diagnostics.append(why)
+            continue
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         if "package.xml" in filenames:
             found.append(Path(dirpath) / "package.xml")
-        if "COLCON_IGNORE" in filenames or "AMENT_IGNORE" in filenames:
-            dirnames[:] = []
     return sorted(found)
-
-
-def _xml_texts(text: str) -> dict[str, str]:
-    """``name`` and ``build_type`` of a package.xml (first occurrence of each)."""
-    out: dict[str, str] = {}
-    stack: list[str] = []
-    parser = safe_parser()
-
-    def start(tag: str, attrs: dict) -> None:
-        if len(stack) >= MAX_XML_DEPTH:
-            raise XmlRefused(f"line {parser.CurrentLineNumber}: elements nested deeper than {MAX_XML_DEPTH}")
-        stack.append(tag)
-
-    def end(tag: str) -> None:
-        stack.pop()
-
-    def data(chunk: str) -> None:
-        if stack and stack[-1] in ("name", "build_type") and len(stack) <= 3:
-            key = stack[-1]
-            if key == "name" and len(stack) != 2:
-                return
-            out[key] = out.get(key, "") + chunk
-
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    parser.CharacterDataHandler = data
-    parser.Parse(text, True)
-    return {k: v.strip() for k, v in out.items()}
 
 
 def _unread(path: Path, root: Path, exc: Exception, notes: list[Diagnostic]) -> None:
@@ -126,18 +103,18 @@ def read_package(xml_path: Path, root: Path, notes: list[Diagnostic] | None = No
     notes = [] if notes is None else notes
     rel = _rel(xml_path, root)
     try:
-        fields = _xml_texts(read_text(xml_path, root))
+        manifest = parse_manifest(read_text(xml_path, root))
     except (OSError, UnicodeDecodeError) as exc:
         return Diagnostic(rel, 1, f"package.xml not read: {describe(exc)}")
     except (xml.parsers.expat.ExpatError, XmlRefused) as exc:
         return Diagnostic(rel, getattr(exc, "lineno", 1) or 1, f"package.xml not read: {exc}")
-    if not fields.get("name"):
+    if not manifest.name:
         return Diagnostic(rel, 1, "package.xml has no <name>")
     folder = xml_path.parent
-    build_type = fields.get("build_type") or (
+    build_type = manifest.build_type or (
         "ament_python" if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file()
         else "ament_cmake")
-    package = Package(fields["name"], _rel(folder, root), build_type)
+    package = Package(manifest.name, _rel(folder, root), build_type)
     scripts = _console_scripts(folder, root, notes)
     if scripts is None:
         package.complete = False

@@ -7,7 +7,10 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
 * the name is exempt (infrastructure, rviz tools, per-node built-in services,
   or the user's external names — see :mod:`.exempt`);
 * some entity of the peer kind has a name the analysis could not resolve and a
-  type that does not rule the match out;
+  type and known end (:attr:`~flake8_rosgraph.graph.model.Entity.name_suffix`) that do
+  not rule the match out — unless the name is a slip of the pen for a name used in
+  the other role with the same message type (``/odmo`` beside ``/odom``): one unknown
+  elsewhere hardly happens to be exactly the misspelt name;
 * another alternative of the same creation site (``'a' if sim else 'b'``) is
   connected or excused: the site works in at least one configuration;
 * the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
@@ -82,12 +85,17 @@ class AbsenceRule(Rule):
         peer_kind = PEER_KIND[self.kind]
         scopes = LaunchScopes(graph.systems)
         # a node no launch file starts still meets a launched executable run as written
-        dangling = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                    and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
-        if not dangling:
+        unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
+                       and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
+        if not unconnected:
             return
-        dangling = self._whole_sites_only(dangling, index)
         near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
+        # An unknown name elsewhere may be this end's partner; hardly so for a slip of the pen.
+        slips = {id(ep) for ep in unconnected if index.unresolved_peer_may_match(ep)
+                 and (near := near_misses.find(ep)) is not None and near.is_slip_of(ep)}
+        dangling = [ep for ep in unconnected
+                    if id(ep) in slips or not index.unresolved_peer_may_match(ep)]
+        dangling = self._whole_sites_only(dangling, index)
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
         for endpoint in dangling:
@@ -95,13 +103,13 @@ class AbsenceRule(Rule):
                          or index.same_role_nodes(endpoint) > 1
                          or namespace_of(endpoint.entity.name) in one_way
                          or scopes.renamed(endpoint.node, endpoint.entity))
-            yield from self._report(endpoint, near_misses, interface, scopes)
+            yield from self._report(endpoint, near_misses, interface, scopes, id(endpoint) in slips)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
+        """No known other end (an unknown one may still exist: see :meth:`check`)."""
         return (endpoint.entity.invalid is None  # rclpy raises before it exists; ROS006 says so
                 and endpoint.entity.name not in exempt
-                and not index.peers(endpoint)
-                and not index.unresolved_peer_may_match(endpoint))
+                and not index.peers(endpoint))
 
     def _whole_sites_only(self, dangling: list[Endpoint], index: EndpointIndex) -> list[Endpoint]:
         """Keep the dangling endpoints whose creation site dangles in every alternative.
@@ -115,13 +123,16 @@ class AbsenceRule(Rule):
         return [ep for ep in dangling if dangling_at[ep.entity.location] == alternatives[ep.entity.location]]
 
     def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
-                scopes: LaunchScopes) -> Iterator[Finding]:
+                scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
+        """``slip_only``: an unknown name may be the partner, so only a slip is worth saying."""
         entity = endpoint.entity
         head = f"{NAME_NOUN[self.kind]} '{entity.name}' has no {self.missing}"
         near = near_misses.find(endpoint)
         if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
             near = None  # a name launch changed, against a node that launch file does not start
+        if slip_only and (near is None or not near.is_slip_of(endpoint)):
+            return
         if near is not None:
             peer = near.peer.entity
             message = (f"{head}; did you mean '{near.name}' "

@@ -178,6 +178,15 @@ class NearMiss:
 
     name: str
     peer: Endpoint
+    #: How sure: :data:`RESOLUTION`, :data:`FOLDED`, :data:`SPELLING` or :data:`NAMESPACE_TOKEN`.
+    kind: int = SPELLING
+
+    def is_slip_of(self, endpoint: Endpoint) -> bool:
+        """Whether ``endpoint``'s name is a slip of the pen for this one (resolution, case or
+        plural, spelling — not a leaf shared across namespaces) with the same known message
+        type: the surest sign of a typo, which an unknown elsewhere hardly explains."""
+        own = endpoint.entity.type
+        return self.kind != NAMESPACE_TOKEN and own is not None and own == self.peer.entity.type
 
 
 class NearMissFinder:
@@ -247,9 +256,9 @@ class NearMissFinder:
         launch files make it), and have a type that does not rule the match out.
         """
         ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
-        for _, other in ranked:
+        for (kind, _), other in ranked:
             for peer in self._peers[other]:
                 if (peer.node.location != endpoint.node.location and endpoint.sees(peer)
                         and types_compatible(endpoint.entity.type, peer.entity.type)):
-                    return NearMiss(other, peer)
+                    return NearMiss(other, peer, kind)
         return None

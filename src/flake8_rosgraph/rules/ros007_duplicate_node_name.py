@@ -5,6 +5,7 @@ from collections import defaultdict
 from typing import Iterator
 
 from ..graph.model import PEER_KIND, Location, RosGraph, RosNode
+from ..launch.model import LaunchedNode
 from .base import Finding, Rule, RuleConfig
 from .fixtures import node_scope
 from .topics import Endpoint, EndpointIndex
@@ -133,11 +134,14 @@ class _Together:
         wanted = set(duplicated)
         self._systems: dict[int, list[str]] = defaultdict(list)
         self._named_at: dict[int, Location] = {}
+        #: The launch action that starts a node, per launch file (the first, if several).
+        self._started_by: dict[tuple[int, str], LaunchedNode] = {}
         for system in graph.systems:
             for instance in system.instances:
                 if instance.node.fqn in wanted:
                     self._systems[id(instance.node)].append(system.launch_file)
                     launched = instance.launched
+                    self._started_by.setdefault((id(instance.node), system.launch_file), launched)
                     if launched.name is not None:
                         self._named_at[id(instance.node)] = Location(
                             launched.launch_file, launched.location.line, launched.location.column)
@@ -164,10 +168,21 @@ class _Together:
             if node.launch is None and node_scope(node) is None:
                 by_file[node.location.path].append(node)
         for launch_file, started in sorted(by_launch.items()):
-            yield from _chained(f"both are started by {launch_file}", started)
+            yield from self._started_together(launch_file, started)
         for _, created in sorted(by_file.items()):
             yield from _chained("both are created in this file", created)
         yield from self._talking(ordered)
+
+    def _started_together(self, launch_file: str, started: list[RosNode]
+                          ) -> Iterator[tuple[str, RosNode, RosNode]]:
+        """Nodes of one launch file paired with the first earlier node that can run beside them:
+        under ``if=X`` and ``unless=X`` they never both start."""
+        actions = [self._started_by[(id(node), launch_file)] for node in started]
+        for index in range(1, len(started)):
+            partner = next((earlier for earlier in range(index)
+                            if not actions[earlier].excludes(actions[index])), None)
+            if partner is not None:
+                yield f"both are started by {launch_file}", started[partner], started[index]
 
     def _talking(self, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
         if self._index is None:

@@ -17,6 +17,9 @@ from ..graph.model import NAMED_KINDS, PEER_KIND, Entity, RosGraph, RosNode
 from .exempt import ExemptNames
 from .fixtures import node_scope, sees
 
+#: What is known of an endpoint whose name is not: its message type and how its name ends.
+Unresolved = tuple["str | None", "str | None"]
+
 
 @dataclass(frozen=True)
 class Endpoint:
@@ -60,18 +63,19 @@ class EndpointIndex:
     """Named endpoints by (kind, resolved name), plus what is known of the unresolved ones."""
 
     by_name: dict[tuple[str, str], list[Endpoint]] = field(default_factory=dict)
-    #: The message types (``None`` = unknown) of the unresolved endpoints, by kind.
-    unresolved_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
+    #: What is known of the unresolved endpoints, by kind: ``(message type, name suffix)``
+    #: (``None`` = unknown; see :attr:`~flake8_rosgraph.graph.model.Entity.name_suffix`).
+    unresolved_types: dict[str, frozenset[Unresolved]] = field(default_factory=dict)
     #: The same, of production nodes only: a fixture's unknown cannot fill a production gap.
-    unresolved_production_types: dict[str, frozenset[str | None]] = field(default_factory=dict)
+    unresolved_production_types: dict[str, frozenset[Unresolved]] = field(default_factory=dict)
     #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
     _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, graph: RosGraph) -> EndpointIndex:
         by_name: dict[tuple[str, str], list[Endpoint]] = defaultdict(list)
-        unresolved_types: dict[str, set[str | None]] = defaultdict(set)
-        unresolved_production: dict[str, set[str | None]] = defaultdict(set)
+        unresolved_types: dict[str, set[Unresolved]] = defaultdict(set)
+        unresolved_production: dict[str, set[Unresolved]] = defaultdict(set)
         scopes: dict[int, str | None] = {}
         for node, entity in graph.entities():
             if entity.kind not in NAMED_KINDS:
@@ -80,9 +84,9 @@ class EndpointIndex:
                 scopes[id(node)] = node_scope(node)
             scope = scopes[id(node)]
             if entity.name is None:
-                unresolved_types[entity.kind].add(entity.type)
+                unresolved_types[entity.kind].add((entity.type, entity.name_suffix))
                 if scope is None:
-                    unresolved_production[entity.kind].add(entity.type)
+                    unresolved_production[entity.kind].add((entity.type, entity.name_suffix))
             else:
                 by_name[(entity.kind, entity.name)].append(Endpoint(node, entity, scope))
         for endpoints in by_name.values():
@@ -137,11 +141,13 @@ class EndpointIndex:
         return self._role_counts[key]
 
     def unresolved_peer_may_match(self, endpoint: Endpoint) -> bool:
-        """Whether an unresolved-name peer exists whose type does not rule out being ``endpoint``'s other end."""
+        """Whether an unresolved-name peer exists whose type and known name end do not rule
+        out being ``endpoint``'s other end: an unknown stays local to the names it could be."""
         unresolved = self.unresolved_types if endpoint.scope is not None else self.unresolved_production_types
-        types = unresolved.get(PEER_KIND[endpoint.entity.kind], frozenset())
-        own_type = endpoint.entity.type
-        return bool(types) and (own_type is None or None in types or own_type in types)
+        own_type, own_name = endpoint.entity.type, endpoint.entity.name or ""
+        return any((own_type is None or peer_type is None or peer_type == own_type)
+                   and (suffix is None or own_name.endswith(suffix))
+                   for peer_type, suffix in unresolved.get(PEER_KIND[endpoint.entity.kind], ()))
 
     def wired_nodes(self, kind: str, exempt: ExemptNames) -> frozenset[int]:
         """``id()`` of every node with an endpoint of ``kind`` that reaches *another* node through a non-exempt name.
@@ -165,5 +171,5 @@ class EndpointIndex:
         return frozenset(wired)
 
 
-def _frozen(types: dict[str, set[str | None]]) -> dict[str, frozenset[str | None]]:
+def _frozen(types: dict[str, set[Unresolved]]) -> dict[str, frozenset[Unresolved]]:
     return {kind: frozenset(found) for kind, found in types.items()}

@@ -17,6 +17,7 @@ setup(
             'talker = chatter.talker:main',
             'listener = chatter.listener:main',
             'echo = chatter.echo:main',
+            'logger = chatter.logger:main',
         ],
     },
 )

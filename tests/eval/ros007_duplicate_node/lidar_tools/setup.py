@@ -17,6 +17,8 @@ setup(
             'filter_median = lidar_tools.filter_median:main',
             'filter_voxel = lidar_tools.filter_voxel:main',
             'scan_logger = lidar_tools.scan_logger:main',
+            'scan_stats = lidar_tools.scan_stats:main',
+            'scan_dump = lidar_tools.scan_stats:dump_main',
         ],
     },
 )
