@@ -14,9 +14,9 @@ from functools import reduce
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, TOP, ClassAtom,
-                                           Coll, Const, DictAtom, Extern, FuncAtom, ModuleAtom, Obj,
-                                           Seq, Value, atoms, join_all)
+from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, SATURATED, TOP,
+                                           ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom,
+                                           ModuleAtom, Obj, Seq, Value, atoms, join_all, soften)
 
 LAWS = settings(max_examples=300, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
@@ -44,8 +44,16 @@ leaf_atoms = st.one_of(
 )
 
 
+def _hinted(constants_: list[Const]) -> Value:
+    """⊤ joined with some constants: an unknown that keeps them as hints."""
+    return TOP.join(atoms(constants_))
+
+
 def _value_of(atom_lists: st.SearchStrategy) -> st.SearchStrategy[Value]:
-    return st.one_of(st.just(TOP), st.just(BOTTOM), st.lists(atom_lists, max_size=6).map(atoms))
+    return st.one_of(st.just(TOP), st.just(SATURATED), st.just(BOTTOM),
+                     st.lists(constants, min_size=1, max_size=14).map(_hinted),
+                     st.lists(constants, min_size=1, max_size=3).map(lambda c: soften(atoms(c))),
+                     st.lists(atom_lists, max_size=6).map(atoms))
 
 
 def _extend(inner: st.SearchStrategy) -> st.SearchStrategy:
@@ -156,15 +164,45 @@ def test_bottom_is_the_identity_of_join(a: Value) -> None:
 
 @LAWS
 @given(any_value)
-def test_top_absorbs_join(a: Value) -> None:
-    assert TOP.join(a) == TOP == a.join(TOP)
-    assert a.leq(TOP)
-    assert TOP.leq(a) == a.is_top
+def test_saturated_top_absorbs_join(a: Value) -> None:
+    assert SATURATED.join(a) == SATURATED == a.join(SATURATED)
+    assert a.leq(SATURATED)
+    assert SATURATED.leq(a) == a.is_saturated
+
+
+@LAWS
+@given(st.lists(constants, min_size=1, max_size=MAX_ATOMS))
+def test_top_keeps_the_constants_it_is_joined_with_as_hints(items: list[Const]) -> None:
+    """``param if c else '/scan'``: still ⊤ to every consumer, with ``'/scan'`` kept as a hint."""
+    known = atoms(items)
+    hinted = TOP.join(known)
+    assert hinted == known.join(TOP)
+    assert hinted.is_top and not hinted.is_saturated
+    assert hinted.consts() is None and hinted.strings() is None and list(hinted) == []
+    assert sorted(map(repr, hinted.hinted())) == sorted(repr(a.value) for a in known)
+    assert TOP.leq(hinted) and known.leq(hinted) and not hinted.leq(TOP)
+
+
+@LAWS
+@given(st.lists(constants, min_size=MAX_ATOMS + 1, max_size=MAX_ATOMS + 4, unique=True))
+def test_hints_past_the_bound_saturate(items: list[Const]) -> None:
+    hinted = TOP
+    for item in items:
+        hinted = hinted.join(atoms([item]))
+    assert hinted == SATURATED
+
+
+def test_top_joined_with_anything_but_constants_saturates() -> None:
+    """Only constants are hints: an unknown that may also be an object keeps nothing."""
+    node = atoms([Obj("a.py:1:0", Extern("rclpy.node.Node"))])
+    assert TOP.join(node) == SATURATED
+    assert TOP.join(atoms([Const.of("/scan"), Extern("std_msgs.msg.String")])) == SATURATED
 
 
 def test_top_and_bottom_are_distinct_and_recognised() -> None:
-    assert TOP != BOTTOM
-    assert TOP.is_top and not TOP.is_bottom
+    assert TOP != BOTTOM and TOP != SATURATED
+    assert TOP.is_top and not TOP.is_bottom and not TOP.is_saturated
+    assert SATURATED.is_top and SATURATED.is_saturated and not SATURATED.is_bottom
     assert BOTTOM.is_bottom and not BOTTOM.is_top
     assert atoms([]) == BOTTOM
 
@@ -179,6 +217,8 @@ def test_values_never_exceed_the_bounds(items: list) -> None:
         assert sum(type(a) is Const for a in value.atoms) <= MAX_ATOMS
         assert len(value.atoms) <= MAX_OBJECTS
         assert _value_depth(value) <= MAX_DEPTH
+    hinted = TOP.join(value)
+    assert hinted.is_saturated or len(hinted.hints) <= MAX_ATOMS
 
 
 @LAWS
@@ -233,7 +273,8 @@ def test_widened_chains_stabilise(sequence: list[Value]) -> None:
 @LAWS
 @given(st.lists(any_value, min_size=1, max_size=40))
 def test_joined_chains_are_finite(sequence: list[Value]) -> None:
-    """Even without widening, an ascending chain built by join grows at most MAX_ATOMS + 1 times."""
+    """Even without widening, an ascending chain built by join grows at most MAX_ATOMS + 2 times
+    (constants one by one, then to ⊤ keeping them as hints, then to the saturated ⊤)."""
     current = BOTTOM
     increases = 0
     for value in sequence:
@@ -242,4 +283,4 @@ def test_joined_chains_are_finite(sequence: list[Value]) -> None:
         if joined != current:
             increases += 1
         current = joined
-    assert increases <= MAX_ATOMS + 1
+    assert increases <= MAX_ATOMS + 2

@@ -385,8 +385,9 @@ def test_unknown_targets_and_switches_invent_nothing(tmp_path: Path) -> None:
 # -- dynamic Python ----------------------------------------------------------------------------
 def test_getattr_on_an_unknown_object_is_unknown_not_its_default(tmp_path: Path) -> None:
     """``getattr(config, 'topic', 'scan')`` on a configuration object the analysis cannot see
-    may be any topic: unknown, never the default alone; on the node itself, which nothing
-    gives that attribute, it is the default."""
+    may be any topic: the default is only one possibility (a partly known name beside the
+    unknown), never the name; on the node itself, which nothing gives that attribute, it is
+    the default."""
     root = write(tmp_path, _package("lidar", {"driver": """
         import rclpy
         from rclpy.node import Node
@@ -407,5 +408,9 @@ def test_getattr_on_an_unknown_object_is_unknown_not_its_default(tmp_path: Path)
             rclpy.init()
             rclpy.spin(Driver())
     """}))
-    assert entities(root) == {"/driver": [("publishers", "/scan_debug", "sensor_msgs/msg/LaserScan", None),
+    assert entities(root) == {"/driver": [("publishers", "/scan", "sensor_msgs/msg/LaserScan", None),
+                                          ("publishers", "/scan_debug", "sensor_msgs/msg/LaserScan", None),
                                           ("publishers", "?", "sensor_msgs/msg/LaserScan", None)]}
+    partial = {e.name: e.partial for node in build_graph(root).nodes for e in node.entities
+               if e.kind == "publishers"}
+    assert partial == {"/scan": True, "/scan_debug": False, None: False}

@@ -26,7 +26,7 @@ from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS
-from .graph.model import RosGraph
+from .graph.model import Entity, RosGraph
 from .graph.parameter_switches import switched_off
 
 #: Effect kinds that put something in the graph a user looks for (parameters are listed
@@ -235,7 +235,7 @@ class _Explainer:
             return Explanation(site, "complete", ())
         reasons = list(unknowns)
         for unknown in unknowns:
-            field = unknown.removeprefix("unknown ")
+            field = unknown.removeprefix("unknown ").split(" ")[0]
             if field == "node":
                 reasons.extend(self._presumed_reasons(key))
                 continue
@@ -269,7 +269,7 @@ class _Explainer:
             if not found:
                 return None
             if any(e.kind != "timers" and e.name is None for _, e in found):
-                out.append("unknown name")
+                out.append("unknown name" + _partly_known(e for _, e in found))
             if any(e.kind != "timers" and e.type is None for _, e in found):
                 out.append("unknown type")
             if any(n.unresolved_base for n, _ in found):
@@ -464,6 +464,15 @@ def _dotted(expr: ast.AST) -> str | None:
     if isinstance(expr, ast.Name):
         return ".".join([expr.id] + parts[::-1])
     return None
+
+
+def _partly_known(entities: Iterable[Entity]) -> str:
+    """`` (known only partly: '/scan' on some paths, unknown on others)`` for a name that is
+    an unknown joined with known constants (``param if launched else '/scan'``); empty otherwise."""
+    known = sorted({e.name for e in entities if e.partial and e.name is not None})
+    if not known:
+        return ""
+    return " (known only partly: " + " or ".join(f"'{n}'" for n in known) + " on some paths, unknown on others)"
 
 
 def _label(func: ast.Attribute) -> str:

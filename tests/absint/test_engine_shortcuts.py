@@ -130,16 +130,9 @@ def _outputs(root: Path) -> str:
                       indent=1, sort_keys=True)
 
 
-def _plain_repr(value: Value) -> str:
-    if value.atoms is None:
-        return "⊤"
-    text = "{" + ", ".join(sorted(map(repr, value.atoms))) + "}"
-    return "~" + text if value.soft else text
-
-
 def _without_shortcuts(monkeypatch: pytest.MonkeyPatch) -> None:
     """Put the plain computation back in place of each shortcut."""
-    monkeypatch.setattr(Value, "__repr__", _plain_repr)
+    monkeypatch.setattr(Value, "__repr__", Value._render)
     monkeypatch.setattr(values, "_MAX_SHARED_CONSTS", 0)
     monkeypatch.setattr(values, "_CONSTS", {})
     monkeypatch.setattr(CallSemantics, "_argument_texts_at",

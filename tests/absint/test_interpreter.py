@@ -319,3 +319,30 @@ def test_membership_in_a_tuple_is_decided_only_for_known_items(analyse):
     assert a.value("m", "none").consts() == [False]
     assert sorted(a.value("m", "maybe").consts()) == [False, True]
     assert sorted(a.value("m", "open_ended").consts()) == [False, True]
+
+
+def test_an_unknown_joined_with_constants_keeps_them_as_hints_only(analyse):
+    """``env or default``, an if/else and a loop: the constants survive as hints of ⊤; no
+    branch is decided on them and nothing is computed from them."""
+    a = analyse({"m.py": """
+        import os
+
+        topic = os.environ.get('TOPIC') or '/scan'
+        if os.environ.get('SIM'):
+            frame = 'sim_base'
+        else:
+            frame = os.environ['FRAME']
+        suffixed = topic + '/filtered'
+        default_topic = topic == '/scan'
+        if topic == '/scan':
+            picked = 'default'
+        else:
+            picked = 'custom'
+        label = os.environ['A'] if os.environ.get('B') else os.environ['C']
+    """})
+    assert a.value("m", "topic").is_top and a.value("m", "topic").hinted() == ["/scan"]
+    assert a.value("m", "frame").hinted() == ["sim_base"]
+    assert a.value("m", "suffixed") == TOP
+    assert sorted(a.value("m", "default_topic").consts()) == [False, True]
+    assert a.strings("m", "picked") == ["custom", "default"]
+    assert a.value("m", "label") == TOP

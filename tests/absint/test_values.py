@@ -40,3 +40,17 @@ def test_signed_zero_and_nan_do_not_make_sets_order_dependent():
     zero, minus_zero, nan = Const.of(0.0), Const.of(-0.0), Const.of(float("nan"))
     assert atoms([zero, minus_zero]) == atoms([minus_zero, zero])
     assert atoms([nan, Const.of(float("nan"))]) == atoms([nan])
+
+
+def test_top_keeps_constants_as_hints_and_saturates_past_the_bound():
+    from flake8_rosgraph.absint.values import SATURATED, Extern
+    hinted = TOP.join(const("/scan")).join(soften(const("/map")))
+    assert hinted.is_top and not hinted.soft and hinted.hinted() == ["/map", "/scan"]
+    assert hinted.strings() is None and list(hinted) == []
+    assert repr(hinted) == "⊤∪{Const(kind='str', value='/map'), Const(kind='str', value='/scan')}"
+    assert TOP.join(atoms([Extern("std_msgs.msg.String")])) == SATURATED
+    assert hinted.widen(TOP.join(const("/odom"))) == SATURATED
+    many = TOP
+    for i in range(MAX_ATOMS + 1):
+        many = many.join(const(i))
+    assert many == SATURATED and many.join(const("a")) == SATURATED

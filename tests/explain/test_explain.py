@@ -233,7 +233,9 @@ def test_launch_file_not_followed_is_said(tmp_path: Path) -> None:
 
 def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> None:
     """A node namespace from an argument, the relative names it takes away, a type chosen
-    by a module-level condition, and a name built from a run-time call."""
+    by a module-level condition between two messages (one entity per type: known) or
+    between a message and what an unmodelled call returns (unknown), and a name built from
+    a run-time call."""
     check(write(tmp_path, {
         "tester/package.xml": PACKAGE_XML.format(name="tester"),
         "tester/tester/__init__.py": "",
@@ -248,6 +250,11 @@ def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> N
                 from geometry_msgs.msg import Twist as CmdVel
             else:
                 from geometry_msgs.msg import TwistStamped as CmdVel
+            if os.environ.get('SIM'):
+                from std_msgs.msg import Bool as Trigger
+            else:
+                from vendor_interfaces import load_trigger_type
+                Trigger = load_trigger_type()
             from std_msgs.msg import String
 
 
@@ -261,7 +268,8 @@ def test_reasons_for_unknown_namespace_type_and_built_names(tmp_path: Path) -> N
             class Driver(Node):
                 def __init__(self):
                     super().__init__('driver_{}'.format(os.getpid()))  # unknown: built from `'driver_{}'.format(os.getpid())`
-                    self.create_publisher(CmdVel, '/cmd_vel', 1)  # unknown: `CmdVel` is bound 2 times at module level
+                    self.create_publisher(CmdVel, '/cmd_vel', 1)  # ok
+                    self.create_publisher(Trigger, '/trigger', 1)  # unknown: `Trigger` is bound 2 times at module level
 
 
             def main():

@@ -182,3 +182,46 @@ def test_alternatives_of_one_site_are_reported_when_all_dangle():
 def test_invalid_name_is_left_to_ros006():
     g = graph(*connected(pub("/a//b", invalid="contains '//'")))
     assert codes(g) == ["ROS006"]
+
+
+def partly_known(spec_kind, name, line, type=None):
+    """The ends of one call whose name is ``name`` on some paths, unknown on others
+    (``param if launched else name``): ``name`` marked partial, beside the unknown rest."""
+    extra = {} if type is None else {"type": type}
+    return spec_kind(name, line=line, partial=True, **extra), spec_kind(None, line=line, **extra)
+
+
+def test_partly_known_publisher_is_never_reported():
+    # Its unknown rest may be subscribed. The same publisher fully known is reported.
+    assert codes(graph(*connected(*partly_known(pub, "/debug", 7)))) == []
+    assert report(graph(*connected(pub("/debug", line=7)))) == ["ROS001 worker.py:7"]
+
+
+def test_partly_known_subscription_counts_as_the_subscriber_of_its_known_name():
+    # The subscription's unknown rest is of another type, so only its known name can
+    # satisfy the Int32 publisher.
+    ends = (sub("/count", line=5, type=INT32, partial=True), sub(None, line=5, type="std_msgs/msg/Bool"))
+    assert codes(graph(*connected(pub("/count", type=INT32)), node("c", *ends)), select=["ROS001"]) == []
+    lone = (sub(None, line=5, type="std_msgs/msg/Bool"),)
+    assert report(graph(*connected(pub("/count", type=INT32)), node("c", *lone)), select=["ROS001"]) == [
+        "ROS001 worker.py:3"]
+
+
+def test_hinted_subscription_name_does_not_make_a_near_miss_against_a_publisher():
+    # '/cmdvel' would be a near miss of '/cmd_vel' if the subscription's name were known; its
+    # unknown rest may be '/cmdvel' itself, so nothing is reported.
+    g = graph(*connected(pub("/cmdvel")), node("base", *partly_known(sub, "/cmd_vel", 5)))
+    assert codes(g) == []
+    known = graph(*connected(pub("/cmdvel")), node("base", sub("/cmd_vel", line=5)))
+    assert messages(known, select=["ROS001"]) == [
+        "ROS001 topic '/cmdvel' has no subscriber; did you mean '/cmd_vel' (subscribed at base.py:5)?"]
+
+
+def test_partly_known_ends_do_not_make_a_node_wired():
+    # The worker reaches the monitor only through a partly known name: its outputs may all
+    # leave the workspace, so its dangling '/debug' is taken for an interface.
+    worker = node("worker", pub("/debug"), pub("/status", line=7, partial=True), pub(None, line=7))
+    g = graph(worker, node("monitor", sub("/status")))
+    assert codes(g, select=["ROS001"]) == []
+    wired = node("worker", pub("/debug"), pub("/status", line=7))
+    assert report(graph(wired, node("monitor", sub("/status"))), select=["ROS001"]) == ["ROS001 worker.py:2"]

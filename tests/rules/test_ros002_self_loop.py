@@ -68,3 +68,11 @@ def test_end_added_from_another_file_still_loops_with_the_node_file():
     n = node("filter", sub("/imu"), path="filter.py")
     n.entities.append(Entity("publishers", "/imu", Location("helpers.py", 7, 5)))
     assert report(graph(n), select=["ROS002"]) == ["ROS002 filter.py:2"]
+
+
+def test_partly_known_names_never_make_a_loop():
+    # ``topic = param if launched else '/imu'``: the node may subscribe something else.
+    hinted = node("filter", pub("/imu"), sub("/imu", line=5, partial=True), sub(None, line=5))
+    assert codes(graph(hinted, node("viz", sub("/imu"))), select=["ROS002"]) == []
+    known = node("filter", pub("/imu"), sub("/imu", line=5))
+    assert codes(graph(known, node("viz", sub("/imu"))), select=["ROS002"]) == ["ROS002"]

@@ -81,3 +81,23 @@ def test_two_working_systems_of_different_types_are_alternatives_not_a_slip():
     # A third end whose type nobody else speaks is still a mismatch.
     g.nodes.append(node("monitor", sub("/demo", type=INT32)))
     assert report(g) == ["ROS004 monitor.py:2"]
+
+
+TWIST, STAMPED = "geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"
+
+
+def test_one_call_with_several_types_agrees_when_one_of_them_does():
+    # ``msg_type = TwistStamped if stamped else Twist``: one subscription, two entities.
+    bridge = node("bridge", sub("/cmd_vel", type=TWIST, line=5), sub("/cmd_vel", type=STAMPED, line=5))
+    assert codes(graph(bridge, node("teleop", pub("/cmd_vel", type=STAMPED)))) == []
+    assert codes(graph(bridge, node("teleop", pub("/cmd_vel", type=TWIST)))) == []
+    assert codes(graph(bridge)) == []
+
+
+def test_one_call_whose_every_type_disagrees_is_reported_once_with_all_of_them():
+    bridge = node("bridge", sub("/cmd_vel", type=TWIST, line=5), sub("/cmd_vel", type=STAMPED, line=5))
+    g = graph(bridge, node("odom", pub("/cmd_vel", type="nav_msgs/msg/Odometry")))
+    assert messages(g) == [
+        "ROS004 topic '/cmd_vel' subscribed as 'geometry_msgs/msg/Twist' or 'geometry_msgs/msg/TwistStamped' "
+        "but published as 'nav_msgs/msg/Odometry' at odom.py:2"]
+    assert report(g) == ["ROS004 bridge.py:5"]

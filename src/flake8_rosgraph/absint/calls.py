@@ -360,8 +360,8 @@ class CallSemantics:
         if spec is None or base is None or not _has_shape(model, spec, args):
             self._escape(args)
             return TOP
-        # An argument the call leaves out is whatever the base class passes, not rclpy's
-        # default: a base may well give its clients a reentrant group or its own QoS.
+        # An argument the call leaves out is whatever the unknown base class passes, not the
+        # model's default: a base may well pass values of its own.
         return self.apply_model(model, receiver, args, node,
                                 marks=(("unresolved_base", const(base)),), known_defaults=False)
 

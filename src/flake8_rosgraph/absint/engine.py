@@ -456,9 +456,9 @@ def _place_and_kind(effect: Effect) -> tuple[str, int, int, str]:
 
 
 def _with_unknown_names(effect: Effect) -> Effect:
-    """``effect`` with every argument made only of constants (names, types, periods) ⊤;
-    the objects it acts on (the node, the target) stay known."""
-    return replace(effect, args=tuple((key, TOP if value.consts() is not None else value)
+    """``effect`` with every argument made only of constants (names, types, periods) ⊤,
+    hints included; the objects it acts on (the node, the target) stay known."""
+    return replace(effect, args=tuple((key, TOP if value.consts() is not None or value.hints else value)
                                       for key, value in effect.args))
 
 

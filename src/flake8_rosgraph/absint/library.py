@@ -191,7 +191,7 @@ class StandIn:
     """A modelled method that a workspace class with an unresolved base (imported from a
     library no stub models) may be calling on itself: only calls that bind to the model's
     parameter list exactly and whose arguments have ``kinds`` are taken to be it (a
-    ``create_timer(name, 1.0)`` of some other framework is not rclpy's)."""
+    same-named method of some other framework, called with other arguments, is not it)."""
 
     owner: str                              # the model class that declares it
     kinds: tuple[tuple[str, str], ...]      # (parameter, kind[?])

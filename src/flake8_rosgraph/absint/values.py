@@ -1,11 +1,22 @@
 """The value lattice: immutable abstract values for Python expressions.
 
-An abstract :class:`Value` is either ⊤ (:data:`TOP`, "anything") or a finite set of
-*atoms*, each atom one concrete possibility: a constant, a heap object named by its
-allocation site, a function, a class, an external (library) symbol, a tuple/list/dict
-shape.  The empty set is ⊥ (unreachable / not yet known).  Sets are bounded by
-:data:`MAX_ATOMS`; past the bound a value becomes ⊤, which makes every ascending chain
-finite — so joining is already a widening, and loops reach a fixpoint.
+An abstract :class:`Value` is either ⊤ ("anything") or a finite set of *atoms*, each
+atom one concrete possibility: a constant, a heap object named by its allocation site, a
+function, a class, an external (library) symbol, a tuple/list/dict shape.  The empty set
+is ⊥ (unreachable / not yet known).
+
+⊤ comes in two kinds.  :data:`TOP` is an unknown that remembers, as *hints*, the
+constants it was joined with: ``self.get_parameter('t').value if c else '/scan'`` is
+"``'/scan'`` or something else", so the graph can still name ``/scan`` — as a name that
+is known only partly, since the unknown part may be anything.  :data:`SATURATED` is ⊤
+past the bounds (too many atoms or hints, a widened loop value, an unknown joined with
+objects): it keeps nothing and absorbs every join, so it is the top of the lattice.
+A hinted ⊤ *is* ⊤ to everything but the graph builder (``is_top``, no atoms, no
+constants): no branch is decided and no value computed from a hint.
+
+Atom sets and hint sets are bounded by :data:`MAX_ATOMS`; past the bound a value
+saturates, which makes every ascending chain finite — so joining is already a
+widening, and loops reach a fixpoint.
 
 Atoms are frozen dataclasses so values hash, compare and can key analysis contexts.
 Nothing here knows about ROS.
@@ -195,15 +206,19 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "soft", "_hash", "_repr")
+    __slots__ = ("atoms", "soft", "hints", "_hash", "_repr")
 
-    def __init__(self, items: frozenset | None, soft: bool = False) -> None:
+    def __init__(self, items: frozenset | None, soft: bool = False,
+                 hints: frozenset | None = frozenset()) -> None:
         # ``None`` means ⊤.  ``soft``: these are defaults the environment may override
         # (a command-line option, a ROS parameter): good for naming what runs by
-        # default, never for deciding a branch.  ⊤ is never soft.
+        # default, never for deciding a branch.  ⊤ is never soft.  ``hints``: for ⊤,
+        # the constants it may also be (``None``: saturated, hints given up); empty
+        # for a known value.
         self.atoms = items
         self.soft = soft and items is not None
-        self._hash = hash((items, self.soft))
+        self.hints = hints if items is None else frozenset()
+        self._hash = hash((items, self.soft, self.hints))
         self._repr: str | None = None
 
     @property
@@ -219,11 +234,21 @@ class Value:
     def is_bottom(self) -> bool:
         return self.atoms is not None and not self.atoms
 
+    @property
+    def is_saturated(self) -> bool:
+        """⊤ that keeps no hints and absorbs every join (the lattice's greatest element)."""
+        return self.hints is None
+
+    def hinted(self) -> list[ConstType]:
+        """The constants a ⊤ is known to include beside its unknown part (sorted by repr)."""
+        return [h.value for h in sorted(self.hints, key=repr)] if self.hints else []
+
     def __iter__(self) -> Iterator[Atom]:
         return iter(()) if self.atoms is None else iter(self.atoms)
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Value) and self.atoms == other.atoms and self.soft == other.soft
+        return isinstance(other, Value) and self.atoms == other.atoms and \
+            self.soft == other.soft and self.hints == other.hints
 
     def __hash__(self) -> int:
         return self._hash
@@ -232,17 +257,21 @@ class Value:
         # Kept once computed: values are immutable, and the engine orders atoms, tasks and
         # effects by this text (nested values are rendered again for every container).
         if self._repr is None:
-            if self.atoms is None:
-                self._repr = "⊤"
-            else:
-                text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
-                self._repr = "~" + text if self.soft else text
+            self._repr = self._render()
         return self._repr
+
+    def _render(self) -> str:
+        if self.atoms is None:
+            if self.hints is None:
+                return "⊤*"
+            return "⊤" + ("∪{" + ", ".join(sorted(map(repr, self.hints))) + "}" if self.hints else "")
+        text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
+        return "~" + text if self.soft else text
 
     # -- lattice operations ------------------------------------------------
     def join(self, other: "Value") -> "Value":
         if self.atoms is None or other.atoms is None:
-            return TOP
+            return _unknown_with(self._hint_part(), other._hint_part())
         soft = self.soft or other.soft
         if other.atoms <= self.atoms and soft == self.soft:
             return self
@@ -250,17 +279,27 @@ class Value:
             return other
         return _bounded(self.atoms | other.atoms, soft)
 
+    def _hint_part(self) -> frozenset | None:
+        """What this value adds to the hints of a ⊤ it is joined with: its constants
+        (``None`` when it holds anything else, which saturates the join)."""
+        if self.atoms is None:
+            return self.hints
+        return self.atoms if all(type(a) is Const for a in self.atoms) else None
+
     def leq(self, other: "Value") -> bool:
         if other.atoms is None:
-            return True
+            if other.hints is None:
+                return True
+            part = self._hint_part()
+            return part is not None and part <= other.hints
         if self.atoms is None:
             return False
         return self.atoms <= other.atoms and (other.soft or not self.soft)
 
     def widen(self, other: "Value") -> "Value":
-        """Widening: any growth at a loop head jumps straight to ⊤."""
+        """Widening: any growth at a loop head jumps straight to the saturated ⊤."""
         joined = self.join(other)
-        return self if joined == self else TOP
+        return self if joined == self else SATURATED
 
     # -- views -----------------------------------------------------------------
     def consts(self) -> list[ConstType] | None:
@@ -282,7 +321,10 @@ class Value:
 
 
 _CONTAINERS = (Seq, Coll, DictAtom, Partial)
+#: ⊤: anything; joined with constants it keeps them as hints.
 TOP = Value(None)
+#: ⊤ past the bounds: keeps nothing, absorbs every join.
+SATURATED = Value(None, hints=None)
 BOTTOM = Value(frozenset())
 #: Either boolean: the value of a test the analysis cannot decide.
 BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
@@ -291,16 +333,26 @@ BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 def _bounded(items: frozenset, soft: bool = False) -> Value:
     if len(items) > MAX_ATOMS and (
             len(items) > MAX_OBJECTS or sum(type(a) is Const for a in items) > MAX_ATOMS):
-        return TOP
+        return SATURATED
     return Value(items, soft)
 
 
+def _unknown_with(hints: frozenset | None, more: frozenset | None) -> Value:
+    """⊤ with the union of two hint sets (saturated when either is, or past the bound)."""
+    if hints is None or more is None:
+        return SATURATED
+    union = hints | more
+    if len(union) > MAX_ATOMS:
+        return SATURATED
+    return Value(None, hints=union) if union else TOP
+
+
 def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
-    """The value holding exactly ``items`` (⊤ past the bounds)."""
+    """The value holding exactly ``items`` (saturated ⊤ past the bounds)."""
     items = frozenset(items)
     for a in items:
         if type(a) in _CONTAINERS and a.depth > MAX_DEPTH:
-            return TOP
+            return SATURATED
     return _bounded(items, soft)
 
 
@@ -340,6 +392,6 @@ def join_all(values: Iterable[Value]) -> Value:
     out = BOTTOM
     for v in values:
         out = out.join(v)
-        if out.is_top:
+        if out.is_saturated:
             return out
     return out

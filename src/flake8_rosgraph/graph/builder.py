@@ -6,7 +6,12 @@ they become nodes and entities.  A node is one creation site × one possible
 (name, namespace); an entity attaches to every node its ``node`` argument may be.
 Names are expanded and validated with rcl's rules (:mod:`.names`); a value the
 analysis could not pin down becomes ``None`` ("unknown"), and a value with several
-possibilities yields one entity per possibility.
+possibilities yields one entity per possibility.  An unknown name that is known to
+include some constants (``param if launched else '/scan'``) yields one entity per
+constant, marked ``partial``, beside the unknown one: the graph names what it can and
+keeps the unknown an unknown.  A type argument that may be one of several message
+classes yields one entity per class — when the name is one: with several names and
+several types, which goes with which is unknown, and the type stays unknown.
 """
 from __future__ import annotations
 
@@ -39,8 +44,10 @@ QOS_NUMBERS = ("depth",)
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 
 
-def interface_type(value: Value) -> str | None:
-    """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``"std_msgs/msg/String"``."""
+def interface_types(value: Value) -> list[str | None]:
+    """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``["std_msgs/msg/String"]``;
+    one type per possibility (``Twist if stamped else TwistStamped``), ``[None]`` when any
+    possibility is not an interface the graph can name."""
     found = set()
     for atom in value:
         if isinstance(atom, Extern):
@@ -51,8 +58,8 @@ def interface_type(value: Value) -> str | None:
         if isinstance(atom, Const) and isinstance(atom.value, str) and atom.value.count("/") == 2:
             found.add(atom.value)
             continue
-        return None
-    return found.pop() if len(found) == 1 else None
+        return [None]
+    return sorted(found) if found else [None]
 
 
 def _policy(value: Value | None) -> str | None:
@@ -154,6 +161,16 @@ def _choices(value: Value) -> list[str | None]:
     """Every possible string, or ``[None]`` when the value is not a known set of strings."""
     strings = value.strings()
     return list(strings) if strings else [None]
+
+
+def _name_choices(value: Value) -> list[tuple[str | None, bool]]:
+    """Every possible name with whether it is only *partly* known: the strings an unknown
+    was joined with (``param if launched else '/scan'``), listed beside the unknown
+    (``None``) that stands for the rest."""
+    hinted = [h for h in value.hinted() if isinstance(h, str)]
+    if hinted:
+        return [(h, True) for h in hinted] + [(None, False)]
+    return [(c, False) for c in _choices(value)]
 
 
 class GraphBuilder:
@@ -269,7 +286,7 @@ class GraphBuilder:
             return []
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
-            type_ = interface_type(eff.arg("type"))
+            types = interface_types(eff.arg("type"))
             qos = qos_of(eff.arg("qos"), dict(eff.args).get("qos_for_depth")) \
                 if kind in ("publishers", "subscriptions") else None
             callback = self.callback_name(eff.arg("callback")) if "callback" in dict(eff.args) \
@@ -277,14 +294,23 @@ class GraphBuilder:
             via = eff.arg("via").strings()
             out = []
             written = dict(eff.texts).get(name_arg)
-            for raw in _choices(eff.arg(name_arg)):
+            choices = _name_choices(eff.arg(name_arg))
+            if len(choices) > 1 and len(types) > 1:
+                # Which type goes with which name is not known (a name -> type table iterated
+                # in one loop): every pairing would invent wrong entities.
+                types = [None]
+            for raw, partial in choices:
                 name, problem = self._resolve(raw, node)
+                if partial and problem:
+                    # A guard the analysis does not decide on a partly known value
+                    # (``if topic:`` after ``topic = param or ''``) keeps it from the call.
+                    continue
                 suffix = names.known_suffix(raw) if name is None and not self.remaps.get(id(node)) \
                     else None
-                out.append(Entity(kind, name, raw_name=raw, type=type_, qos=qos,
-                                  callback=callback, invalid=problem,
-                                  via=via[0] if via else None, name_text=written,
-                                  name_suffix=suffix, **common))
+                out.extend(Entity(kind, name, raw_name=raw, type=type_, qos=qos, callback=callback,
+                                  invalid=problem, via=via[0] if via else None, name_text=written,
+                                  name_suffix=suffix, partial=partial, **common)
+                           for type_ in types)
             return out
         if eff.kind == "timer":
             callback = self.callback_name(eff.arg("callback"))
@@ -297,8 +323,9 @@ class GraphBuilder:
         if eff.kind == "parameter":
             default = json_value(eff.arg("default"))
             return [Entity("parameters", n, raw_name=n, default=default,
-                           invalid=_param_problem(n), **common)
-                    for n in _choices(eff.arg("name"))]
+                           invalid=_param_problem(n), partial=partial, **common)
+                    for n, partial in _name_choices(eff.arg("name"))
+                    if not (partial and _param_problem(n))]  # as for names above
         if eff.kind == "parameters":
             return self._declared_parameters(eff, common)
         return []
@@ -397,7 +424,7 @@ def _entity_order(e: Entity) -> tuple:
     """Sort key that is also the identity of an entity on its node."""
     return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
             e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
-            e.invalid or "", e.via or "")
+            e.invalid or "", e.via or "", e.partial)
 
 
 def build_graph_from(analysis: Analysis) -> RosGraph:

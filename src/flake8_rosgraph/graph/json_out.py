@@ -1,7 +1,7 @@
 """The graph as JSON, per the public contract ``rosgraph/1`` (docs: graph-json.md).
 
 Key order and list order are fixed, so the same graph always serialises to the
-same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``language``, ``diagnostics``)
+same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``partial``, ``language``, ``diagnostics``)
 are additions the contract allows; consumers ignore what they do not know.
 """
 from __future__ import annotations
@@ -38,6 +38,8 @@ def _entity(e: Entity) -> dict[str, Any]:
         out["invalid"] = e.invalid
     if e.via:
         out["via"] = e.via
+    if e.partial:
+        out["partial"] = True
     return out
 
 

@@ -65,6 +65,10 @@ class Entity:
     #: ``'/amcl_pose'`` for ``'amcl_pose'`` on a node of unknown namespace. An unknown with a
     #: known end can only be the other end of names that end so.
     name_suffix: str | None = None
+    #: The name is one known alternative of a name that may also be something unknown
+    #: (``param if launched else '/scan'``); the unknown rest is an entity of its own with
+    #: name ``None`` at the same location.
+    partial: bool = False
 
 
 @dataclass

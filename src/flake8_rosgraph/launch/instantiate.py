@@ -43,6 +43,19 @@ def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
     return launched.namespace if launched.namespace is not None else code.namespace
 
 
+#: Stands for a node whose name is unknown where the result does not depend on it.
+_ANY_NODE = "unknown"
+
+
+def _needs_node_name(raw: str, rules: list[names.RemapRule]) -> bool:
+    """Whether expanding and remapping ``raw`` needs the node's name: a private name, a
+    ``{node}`` substitution, or a rule for one node or with a private side."""
+    def private(text: str) -> bool:
+        return text.startswith("~") or "{node}" in text
+    return private(raw) or any(rule.node is not None or private(rule.match) or private(rule.replacement)
+                               for rule in rules)
+
+
 def _launched_suffix(entity: Entity, resolved: str | None, rules: list[names.RemapRule],
                      launched: LaunchedNode) -> str | None:
     """The known end of a launched entity's unknown name (:attr:`Entity.name_suffix`): none
@@ -143,6 +156,8 @@ class Instantiator:
         raw = entity.raw_name
         if raw is None:
             return None, None, None
+        if name is None and not _needs_node_name(raw, rules):
+            name = _ANY_NODE  # a relative name and these rules depend on the namespace only
         if name is None or namespace is None or not names.validate_node_name(name).ok \
                 or not names.validate_namespace(namespace).ok:
             # An unknown or invalid launch name/namespace (ROS203 reports the latter at the

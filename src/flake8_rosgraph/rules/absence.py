@@ -11,6 +11,10 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   not rule the match out — unless the name is a slip of the pen for a name used in
   the other role with the same message type (``/odmo`` beside ``/odom``): one unknown
   elsewhere hardly happens to be exactly the misspelt name;
+* the end's name is known only partly (``param if launched else '/scan'``): its
+  site's unknown alternative may be connected. A partly known end does count as
+  the present other end of its name (``/scan`` above satisfies a subscriber of
+  ``/scan``), but never makes another end reportable (:meth:`.EndpointIndex.wired_nodes`);
 * another alternative of the same creation site (``'a' if sim else 'b'``) is
   connected or excused: the site works in at least one configuration;
 * the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
@@ -108,6 +112,7 @@ class AbsenceRule(Rule):
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:
         """No known other end (an unknown one may still exist: see :meth:`check`)."""
         return (endpoint.entity.invalid is None  # rclpy raises before it exists; ROS006 says so
+                and not endpoint.entity.partial  # the site's unknown alternative may be connected
                 and endpoint.entity.name not in exempt
                 and not index.peers(endpoint))
 

@@ -186,7 +186,8 @@ class NearMiss:
         plural, spelling — not a leaf shared across namespaces) with the same known message
         type: the surest sign of a typo, which an unknown elsewhere hardly explains."""
         own = endpoint.entity.type
-        return self.kind != NAMESPACE_TOKEN and own is not None and own == self.peer.entity.type
+        return self.kind != NAMESPACE_TOKEN and own is not None and own == self.peer.entity.type \
+            and not self.peer.entity.partial  # a partly known end makes no end reportable
 
 
 class NearMissFinder:

@@ -37,9 +37,15 @@ class PublisherWithoutSubscriber(AbsenceRule):
     Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
     `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
     `/joint_states`, rviz tool topics) are exempt. It also stays quiet when
-    some subscription's topic name could not be resolved and its type does
-    not rule the match out, and when another alternative of the same
-    creation site (`'a' if sim else 'b'`) is connected.
+    some subscription's topic name could not be resolved and its type and
+    known end (a relative name on a node of unknown namespace ends in
+    `/<name>`) do not rule the match out — but not for a slip of the pen
+    (spelling, case, plural, resolution) of a fully known subscribed name
+    of the same type — and when another alternative of the same
+    creation site (`'a' if sim else 'b'`) is connected. A topic name known
+    only partly (`param if launched else '/scan'`) is never reported, since
+    its unknown alternative may be subscribed; its known alternative counts
+    as a publisher of that topic for ROS003.
 
     Numbered families (`/robot1/odom` vs `/robot2/odom`, `/cmd` vs `/cmd2`)
     are never near names, nor is one last name in two namespaces

@@ -36,8 +36,11 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
     `/joint_states`, rviz tool topics such as `/initialpose` and
     `/goal_pose`) are exempt. It also stays quiet when some publisher's topic
-    name could not be resolved and its type does not rule the match out, and
-    when another alternative of the same creation site is connected.
+    name could not be resolved and its type and known end do not rule the
+    match out (a slip of the pen of a fully known published name of the same
+    type is reported all the same), and when another alternative of the same creation site is connected. A
+    topic name known only partly (`param if launched else '/scan'`) is never
+    reported; its known alternative counts as a subscription for ROS001.
     Which names count as near, how test fixtures are kept apart from
     production nodes, and how a changed-files run shows a near-name finding
     are as for ROS001 (see its Known problems).

@@ -27,8 +27,9 @@ class MessageTypeMismatch(Rule):
     ## Known problems
     Only endpoints whose types are known are compared. A node that creates the
     same endpoint with either type (a run-time choice such as `Twist` on one
-    ROS distribution, `TwistStamped` on another) is not reported when one of
-    its choices agrees. Nor when every type in use on the name has both
+    ROS distribution, `TwistStamped` on another, in one call or in two) is not
+    reported when one of its choices agrees, and a call whose every choice
+    disagrees is reported once, naming them all. Nor when every type in use on the name has both
     roles (publishers and subscriptions of that type): those are separate
     working systems, such as the same demo written in C++ and in Python. The
     finding is reported
@@ -86,13 +87,20 @@ class MessageTypeMismatch(Rule):
         for ep in typed:
             roles.setdefault(ep.entity.type, set()).add(ep.entity.kind)
         complete = {t for t, kinds in roles.items() if len(kinds) == 2}
+        # One call with several possible types (``Twist if stamped else TwistStamped``) is one
+        # end with alternatives: reported once, with every type it may take.
+        sites: dict[tuple, list[Endpoint]] = {}
         for ep in typed:
             entity = ep.entity
             if entity.type == reference or (id(ep.node), entity.kind) in configurable \
                     or (entity.type in complete and reference in complete):
                 continue
+            sites.setdefault((id(ep.node), entity.kind, entity.location, entity.name), []).append(ep)
+        for alternatives in sites.values():
+            entity = alternatives[0].entity
+            types = " or ".join(f"'{t}'" for t in sorted({ep.entity.type for ep in alternatives}))
             # Name the other side when it exists: "subscribed as X but published as Y".
             witness = next((a for a in agreeing if a.entity.kind != entity.kind), agreeing[0]).entity
-            message = (f"{NAME_NOUN[entity.kind]} '{entity.name}' {VERB[entity.kind]} as '{entity.type}' "
+            message = (f"{NAME_NOUN[entity.kind]} '{entity.name}' {VERB[entity.kind]} as {types} "
                        f"but {VERB[witness.kind]} as '{reference}' at {witness.location.short()}")
             yield Finding(entity.location, self.code, message, tuple(related(a.entity) for a in agreeing))

@@ -34,7 +34,9 @@ class ServiceClientWithoutServer(AbsenceRule):
     such as `<node>/get_parameters`, `<node>/get_type_description`, logger
     services, and the lifecycle services of lifecycle nodes) are exempt. It
     also stays quiet when some server's name could not be resolved and its
-    type does not rule the match out.
+    type and known end do not rule the match out (a slip of the pen of a
+    fully known served name of the same type is reported all the same). A client whose name is known only
+    partly (`param if remote else 'add'`) is never reported.
     Which names count as near, how test fixtures are kept apart from
     production nodes, and how a changed-files run shows a near-name finding
     are as for ROS001 (see its Known problems).

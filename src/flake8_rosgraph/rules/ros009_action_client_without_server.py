@@ -30,8 +30,10 @@ class ActionClientWithoutServer(AbsenceRule):
     stays quiet (unless a near name is served) when none of them does,
     when several nodes use the action, or when the workspace only uses
     actions of the action's namespace in this role. It also stays quiet when
-    some action server's name could not be resolved and its type does not
-    rule the match out.
+    some action server's name could not be resolved and its type and known
+    end do not rule the match out (a slip of the pen of a fully known served
+    name of the same type is reported all the same). A client whose name is known only partly
+    (`param if remote else 'fibonacci'`) is never reported.
     Which names count as near, how test fixtures are kept apart from
     production nodes, and how a changed-files run shows a near-name finding
     are as for ROS001 (see its Known problems).

@@ -115,11 +115,11 @@ class EndpointIndex:
         counts: Counter[str] = Counter()
         peer_used: set[str] = set()
         peer_kind = PEER_KIND[kind]
-        for k, name in self.by_name:
+        for (k, name), endpoints in self.by_name.items():
             if k == kind:
                 counts[namespace_of(name)] += 1
-            elif k == peer_kind:
-                peer_used.add(namespace_of(name))
+            elif k == peer_kind and not all(ep.entity.partial for ep in endpoints):
+                peer_used.add(namespace_of(name))  # a partly known name is no evidence of use
         return frozenset(ns for ns, n in counts.items() if n > 1 and ns != "/" and ns not in peer_used)
 
     def peers(self, endpoint: Endpoint) -> list[Endpoint]:
@@ -154,7 +154,8 @@ class EndpointIndex:
 
         Infrastructure names (``/tf``, ``/clock``, ...) do not count: sharing
         them says nothing about whether a node's publishers (say) feed the
-        workspace's own data flow or only the world outside.
+        workspace's own data flow or only the world outside. Nor do partly known
+        names (``param if launched else '/scan'``): the node may use another one.
         """
         wired: set[int] = set()
         for (k, name), endpoints in self.by_name.items():
@@ -162,9 +163,12 @@ class EndpointIndex:
                 continue
             peer_nodes_by_scope: dict[str | None, set[int]] = {}
             for ep in endpoints:
+                if ep.entity.partial:
+                    continue
                 # Ends of one scope see the same peers: compute them once per scope.
                 if ep.scope not in peer_nodes_by_scope:
-                    peer_nodes_by_scope[ep.scope] = {id(p.node) for p in self.peers(ep)}
+                    peer_nodes_by_scope[ep.scope] = {id(p.node) for p in self.peers(ep)
+                                                     if not p.entity.partial}
                 peer_nodes = peer_nodes_by_scope[ep.scope]
                 if len(peer_nodes) > 1 or (peer_nodes and id(ep.node) not in peer_nodes):
                     wired.add(id(ep.node))
