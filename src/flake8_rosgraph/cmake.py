@@ -45,6 +45,10 @@ def _quoted_end(text: str, pos: int) -> int:
     return len(text)
 
 
+#: The rest of an unquoted argument (``\s`` is ``str.isspace``): at least its first character.
+_UNQUOTED_REST = re.compile(r".[^\s()]*", re.DOTALL)
+
+
 def _arguments(text: str, pos: int) -> tuple[list[str], int]:
     """The arguments of a command whose ``(`` is at ``pos``, and the position after its ``)``."""
     args: list[str] = []
@@ -71,7 +75,11 @@ def _arguments(text: str, pos: int) -> tuple[list[str], int]:
             depth += char == "("
             depth -= char == ")"
         elif start < 0:
+            # An unquoted argument runs to the next space or parenthesis (quotes, brackets and
+            # ``#`` inside it are plain characters): one match, not a step per character.
             start = i
+            i = _UNQUOTED_REST.match(text, i).end()
+            continue
         i += 1
     if start >= 0:
         args.append(text[start:i])

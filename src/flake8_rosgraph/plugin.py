@@ -119,7 +119,24 @@ def _root_for(run: _Run, path: Path) -> Path:
     return known
 
 
-@functools.lru_cache(maxsize=8)
+def _per_report(build: Callable[[WorkspaceReport], Any]) -> Callable[[WorkspaceReport], Any]:
+    """Memoise ``build`` per report object (the last few). Not by value, as ``lru_cache``
+    would: hashing every finding of the workspace again on every checked file cost more than
+    the lookup it saved. The memo holds the report, so its ``id`` cannot be reused meanwhile."""
+    memo: dict[int, tuple[WorkspaceReport, Any]] = {}
+
+    @functools.wraps(build)
+    def cached(report: WorkspaceReport) -> Any:
+        hit = memo.get(id(report))
+        if hit is None:
+            if len(memo) >= 8:
+                memo.clear()
+            hit = memo[id(report)] = (report, build(report))
+        return hit[1]
+    return cached
+
+
+@_per_report
 def _by_file(report: WorkspaceReport) -> dict[str, list[Finding]]:
     index: dict[str, list[Finding]] = {}
     for finding in report.findings:
@@ -127,7 +144,7 @@ def _by_file(report: WorkspaceReport) -> dict[str, list[Finding]]:
     return index
 
 
-@functools.lru_cache(maxsize=8)
+@_per_report
 def _by_other_end(report: WorkspaceReport) -> dict[str, list[Finding]]:
     """Broken-connection findings by the files of their other ends (see :mod:`.partial_runs`)."""
     index: dict[str, list[Finding]] = {}
@@ -141,20 +158,31 @@ def _by_other_end(report: WorkspaceReport) -> dict[str, list[Finding]]:
 def _relative(path: Path, root: Path) -> str | None:
     if root.is_file():  # a lone file is its own root; its findings are named relative to its folder
         root = root.parent
-    for candidate, base in ((path, root), (path.resolve(), root.resolve())):
-        try:
-            return candidate.relative_to(base).as_posix()
-        except ValueError:
-            continue
-    return None
+    try:
+        return path.relative_to(root).as_posix()
+    except ValueError:
+        pass
+    try:  # through links: resolved only when the plain paths do not nest (a stat per part)
+        return path.resolve().relative_to(root.resolve()).as_posix()
+    except ValueError:
+        return None
+
+
+#: The last answer of :func:`_file_report` as ``[run, (filename, buffers), answer]``: the checker
+#: asks for a file's findings and then for the analysis's errors, one right after the other.
+_LAST_FILE: list[Any] = []
 
 
 def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, Path, str] | None:
+    buffers = tuple(sorted(run.buffers.items()))
+    if _LAST_FILE and _LAST_FILE[0] is run and _LAST_FILE[1] == (filename, buffers):
+        return _LAST_FILE[2]
     path = Path(os.path.abspath(filename))
     root = _root_for(run, path)
     relative = _relative(path, root)
-    buffers = tuple(sorted(run.buffers.items()))
-    return None if relative is None else (workspace_report(root, run.settings, buffers), root, relative)
+    found = None if relative is None else (workspace_report(root, run.settings, buffers), root, relative)
+    _LAST_FILE[:] = [run, (filename, buffers), found]
+    return found
 
 
 def _note_buffer(run: _Run, filename: str, lines: list[str]) -> None:
@@ -208,10 +236,13 @@ def analysis_errors(run: _Run, filename: str) -> list[str]:
     becomes a ROS000 on every checked file (the report hook keeps one).
     """
     found = _file_report(run, filename)
-    if found is None:
-        return []
+    return [] if found is None else list(_error_texts(found[0]))
+
+
+@_per_report
+def _error_texts(report: WorkspaceReport) -> list[str]:
     return [f"{d.path}:{d.line}: {d.message}" if d.path else d.message
-            for d in found[0].diagnostics if d.severity == "error"]
+            for d in report.diagnostics if d.severity == "error"]
 
 
 class RosGraphChecker:

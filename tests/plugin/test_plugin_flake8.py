@@ -143,3 +143,20 @@ def test_files_outside_any_ros_workspace_are_quiet(fake_engine: Path, tmp_path: 
     plain = write_tree(tmp_path / "plain", {"tool.py": "print('hello')\n"})
     status, out = run(["--isolated", "--select", "ROS", "tool.py"], plain)
     assert (status, out) == (0, "")
+
+
+def test_a_second_run_in_the_same_process_reports_the_edited_workspace(fake_engine: Path, workspace: Path,
+                                                                         run) -> None:
+    """The checker keeps per-report indexes and the last file's report between calls: a new
+    run (an editor's language server runs flake8 again in one process) on the same file must
+    not reuse them."""
+    listener = ["--isolated", "--select", "ROS", "src/pkg_b/pkg_b/listener.py"]
+    _, first = run(listener, workspace)
+    assert parse_flake8(first) == [("src/pkg_b/pkg_b/listener.py", 7, 10, "ROS003")]
+    talker = workspace / "src/pkg_a/pkg_a/talker.py"
+    # The talker publishes '/nobody' now: the listener's subscription is heard.
+    talker.write_text(talker.read_text(encoding="utf-8") + "    node.create_publisher(String, 'nobody', 10)\n",
+                      encoding="utf-8")
+    _, second = run(listener, workspace)
+    assert parse_flake8(second) == []
+    assert len(analyses(fake_engine)) == 2

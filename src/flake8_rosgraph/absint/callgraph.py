@@ -57,9 +57,16 @@ class CallGraph:
     def __init__(self, calls: dict[tuple, dict[tuple, CallSite]]) -> None:
         self._calls = calls
         self._sorted: dict[tuple, list[CallSite]] = {}
+        #: Tasks by function (fid), in ``repr`` order; rebuilt if the table grew since.
+        self._by_function: dict[int, list[tuple]] = {}
+        self._indexed = -1
+        #: Every task in ``repr`` order; rebuilt if the table grew since.
+        self._ordered: list[tuple] | None = None
 
     def tasks(self) -> Iterator[tuple]:
-        return iter(sorted(self._calls, key=repr))
+        if self._ordered is None or len(self._ordered) != len(self._calls):
+            self._ordered = sorted(self._calls, key=repr)
+        return iter(self._ordered)
 
     def sites(self, task: tuple) -> list[CallSite]:
         """The calls ``task`` makes, in source order."""
@@ -71,4 +78,9 @@ class CallGraph:
 
     def tasks_of(self, fid: int) -> list[tuple]:
         """Every analysed task of function ``fid`` (one per context)."""
-        return sorted((t for t in self._calls if t[0] == "fn" and t[1] == fid), key=repr)
+        if self._indexed != len(self._calls):
+            self._by_function = {}
+            for task in sorted((t for t in self._calls if t[0] == "fn"), key=repr):
+                self._by_function.setdefault(task[1], []).append(task)
+            self._indexed = len(self._calls)
+        return list(self._by_function.get(fid, ()))

@@ -410,6 +410,15 @@ class CallSemantics:
             out[name] = text if len(text) <= 80 else text[:77] + "..."
         return out
 
+    def _argument_texts_at(self, model: FunctionModel, receiver: Atom | None, node) -> dict[str, str]:
+        """:meth:`argument_texts`, kept per call site: a task re-runs its calls on every run,
+        and unparsing the arguments again would give the same text (nodes outlive the analysis)."""
+        key = (id(node), id(model), receiver is None)
+        texts = self._texts.get(key)
+        if texts is None:
+            texts = self._texts[key] = self.argument_texts(model, receiver, node)
+        return texts
+
     def apply_model(self, model: FunctionModel, receiver: Atom | None, args: "Args", node,
                     marks: tuple[tuple[str, Value], ...] = (), known_defaults: bool = True) -> Value:
         """Bind, compute the return value, record the effects (with ``marks`` appended to
@@ -420,7 +429,7 @@ class CallSemantics:
         bound["@return"] = result
         frame = self.frame
         recorded = []
-        written = self.argument_texts(model, receiver, node) if model.effects else {}
+        written = self._argument_texts_at(model, receiver, node) if model.effects else {}
         for index, spec in enumerate(model.effects):
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args

@@ -150,10 +150,15 @@ class Analysis:
         self.task_runs = 0
         self.every_module_is_entry = every_module_is_entry
         self.relevant: set[str] = set()
+        #: ``all_effects()`` as of ``(task_runs, number abandoned)``.
+        self._all_effects: tuple[tuple[int, int], list[Effect]] | None = None
 
     # -- heap -----------------------------------------------------------------------------
     def read(self, key: Hashable, task: Task) -> Value:
-        self.readers.setdefault(key, {})[task] = None
+        readers = self.readers.get(key)
+        if readers is None:
+            readers = self.readers[key] = {}
+        readers[task] = None
         if key[0] == "g" and ("mod", key[1], ()) not in self._known:
             self.enqueue(("mod", key[1], ()))  # a module needed only for its globals
         return self.heap.get(key, BOTTOM)
@@ -426,7 +431,11 @@ class Analysis:
         """Effects of the latest run of every task, deduplicated, in a stable order.
 
         The effects of an abandoned task come from a run on inputs that were still
-        growing: their names may be a part of the real ones, so they become unknown."""
+        growing: their names may be a part of the real ones, so they become unknown.
+        Kept until a task runs or is abandoned again (the graph and its facts each ask)."""
+        state = (self.task_runs, len(self.abandoned))
+        if self._all_effects is not None and self._all_effects[0] == state:
+            return list(self._all_effects[1])
         seen: dict[Effect, None] = {}
         for task, effects in self.effects.items():
             unfinished = task in self.abandoned
@@ -438,7 +447,8 @@ class Analysis:
         for _, tied in itertools.groupby(sorted(seen, key=_place_and_kind), key=_place_and_kind):
             group = list(tied)
             out += group if len(group) == 1 else sorted(group, key=lambda e: repr(e.args))
-        return out
+        self._all_effects = (state, out)
+        return list(out)
 
 
 def _place_and_kind(effect: Effect) -> tuple[str, int, int, str]:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import ast
 import itertools
+from typing import Callable
 
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
@@ -19,11 +20,23 @@ from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom
 class ExpressionSemantics:
     """Expression evaluation, mixed into :class:`~.interpreter.Interpreter`."""
 
+    #: Node type → its ``e_`` method (``None``: not modelled, ⊤), per class: one dict lookup
+    #: per evaluation instead of building the method's name and looking it up by string.
+    _evaluators: dict[type, Callable | None] = {}
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._evaluators = {}
+
     def eval(self, node: ast.expr) -> Value:
-        method = getattr(self, "e_" + type(node).__name__, None)
+        kind = type(node)
+        try:
+            method = self._evaluators[kind]
+        except KeyError:
+            method = self._evaluators[kind] = getattr(type(self), "e_" + kind.__name__, None)
         if method is None:
             return TOP
-        return method(node)
+        return method(self, node)
 
     def e_Constant(self, node: ast.Constant) -> Value:
         return const(node.value)

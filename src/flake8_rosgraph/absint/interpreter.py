@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 import builtins
 import heapq
+from typing import Callable
 
 from .cfg import CFG, Bind, Eval, Return
 from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
@@ -26,16 +27,26 @@ from .instances import InstanceFacts
 from .objects import ObjectSemantics
 
 BUILTIN_NAMES = frozenset(dir(builtins))
+#: Expressions whose evaluation may change state (see ``Interpreter._pure_test``).
+_IMPURE_IN_TESTS = (ast.Call, ast.NamedExpr, ast.Await, ast.Yield, ast.YieldFrom, ast.Lambda,
+                    ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts):
+    #: Statement type → its ``s_`` method (``None``: nothing to do), looked up once per type.
+    _executors: dict[type, Callable | None] = {}
+
     def __init__(self, analysis: Analysis) -> None:
         self.an = analysis
         self.program = analysis.program
         self.lib = analysis.library
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
+        self._extern_mro: dict[str, list] = {}  # library class -> its MRO as Extern atoms
+        self._pure_tests: dict[int, bool] = {}  # id(branch test) -> see ``_pure_test``
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
+        #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
+        self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
 
     # =====================================================================================
     # tasks and CFGs
@@ -111,13 +122,21 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             frame.block = bid
             frame.guarded = bool(block.exc_succs)
             frame.env = dict(states[bid])
+            tested: tuple[ast.expr, Value] | None = None
             for op in block.ops:
-                self.exec_op(op)
+                if type(op) is Eval and op is block.ops[-1] and self._pure_test(op.expr):
+                    tested = (op.expr, self.eval(op.expr))
+                else:
+                    self.exec_op(op)
             out = frame.env
             targets: list[tuple[int, Env]] = []
             for edge in block.succs:
                 if edge.test is not None:
-                    decided = self.truth(self.eval(edge.test), by_default=False)
+                    # A branch block ends by evaluating its test; a test without calls or
+                    # assignments gives that same value again on each edge: reused.
+                    value = tested[1] if tested is not None and tested[0] is edge.test \
+                        else self.eval(edge.test)
+                    decided = self.truth(value, by_default=False)
                     if decided is not None and decided != edge.polarity:
                         continue
                 targets.append((edge.target, out))
@@ -129,7 +148,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             for target, state in targets:
                 old = states.get(target)
                 if old is None:
-                    new = dict(state)
+                    # Shared, not copied: a block's environments are never changed in place
+                    # (a visit works on a copy, joins build new ones).
+                    new = state
                 else:
                     widen = target in cfg.loop_heads and visits.get(target, 0) >= WIDEN_AFTER
                     new = _join_env(old, state, widen)
@@ -141,6 +162,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     queued.add(target)
                     heapq.heappush(work, target)
 
+    def _pure_test(self, test: ast.expr) -> bool:
+        """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library
+        model may store what a later part reads, a container method mutates), no assignment,
+        no ``await``/``yield``; so evaluating it again right after gives the same value."""
+        pure = self._pure_tests.get(id(test))
+        if pure is None:
+            pure = self._pure_tests[id(test)] = not any(
+                isinstance(node, _IMPURE_IN_TESTS) for node in ast.walk(test))
+        return pure
+
     @staticmethod
     def _scope_name(frame: Frame) -> str:
         return frame.func.qualname if frame.func else f"module {frame.module.name}"
@@ -149,17 +180,21 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     # statements
     # =====================================================================================
     def exec_op(self, op) -> None:
-        if isinstance(op, Eval):
+        kind = type(op)
+        if kind is Eval:
             self.eval(op.expr)
-        elif isinstance(op, Bind):
+        elif kind is Bind:
             self.exec_bind(op)
-        elif isinstance(op, Return):
+        elif kind is Return:
             value = const(None) if op.value is None else self.eval(op.value)
             self.frame.ret = self.frame.ret.join(value)
         else:
-            method = getattr(self, "s_" + type(op).__name__, None)
+            try:
+                method = self._executors[kind]
+            except KeyError:
+                method = self._executors[kind] = getattr(type(self), "s_" + kind.__name__, None)
             if method is not None:
-                method(op)
+                method(self, op)
 
     def exec_bind(self, op: Bind) -> None:
         if op.how == "iter":
@@ -334,9 +369,10 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         frame = self.frame
         if name.startswith("$"):  # the CFG's temporaries (a loop's iterable, a match subject)
             return frame.env.get(name, TOP)
-        for overlay in reversed(frame.comp):
-            if name in overlay:
-                return overlay[name]
+        if frame.comp:
+            for overlay in reversed(frame.comp):
+                if name in overlay:
+                    return overlay[name]
         if frame.cls is not None and name in frame.env:
             return frame.env[name]
         func = frame.func
@@ -417,6 +453,6 @@ def _join_env(old: Env, new: Env, widen: bool) -> Env:
         prev = out.get(name)
         if prev is None:
             out[name] = value
-        else:
+        elif prev is not value:  # a value joined or widened with itself is itself
             out[name] = prev.widen(value) if widen else prev.join(value)
     return out

@@ -180,7 +180,7 @@ class ObjectSemantics:
         still reads those bases so that the current task is re-run if they grow.
         """
         if isinstance(cls, Extern):
-            return [Extern(q) for q in self.lib.mro(cls.qualname)]
+            return self._library_mro(cls)
         if not isinstance(cls, ClassAtom):
             return []
         memo = self._mro_memo.get(cls.cid)
@@ -191,13 +191,20 @@ class ObjectSemantics:
         self._mro_memo[cls.cid] = (result, tuple(used))
         return result
 
+    def _library_mro(self, cls: Extern) -> list[Atom]:
+        """The MRO of a library class as atoms, built once per class (the model is fixed)."""
+        known = self._extern_mro.get(cls.qualname)
+        if known is None:
+            known = self._extern_mro[cls.qualname] = [Extern(q) for q in self.lib.mro(cls.qualname)]
+        return known
+
     def _bases_value(self, cid: int) -> Value:
         key = ("bases", cid)
         return self.an.read(key, self.frame.task) if self.frame else self.an.heap.get(key, BOTTOM)
 
     def _linearise(self, cls: Atom, seen: frozenset, used: list) -> list[Atom]:
         if isinstance(cls, Extern):
-            return [Extern(q) for q in self.lib.mro(cls.qualname)]
+            return self._library_mro(cls)
         if not isinstance(cls, ClassAtom) or cls in seen:
             return []
         bases_value = self._bases_value(cls.cid)

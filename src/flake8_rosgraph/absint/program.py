@@ -101,6 +101,11 @@ class _Scope:
 
 
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+_FUNCTION_NODES = frozenset((ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+#: Node kinds besides names and attributes that bind or declare something in their scope.
+_BINDING_NODES = frozenset((ast.alias, ast.Global, ast.Nonlocal, ast.ExceptHandler, ast.MatchAs,
+                            ast.MatchStar, ast.MatchMapping, ast.Yield, ast.YieldFrom,
+                            ast.NamedExpr))
 #: Node kinds that bind, read and define nothing: not worth a visit.
 _NOTHING_INSIDE = (ast.expr_context, ast.operator, ast.boolop, ast.unaryop, ast.cmpop,
                    ast.Constant, ast.Pass, ast.Break, ast.Continue)
@@ -157,8 +162,9 @@ class Program:
         while stack:
             node, scope, prefix, fid, cid = stack.pop()
             todo: list[tuple] = []
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                lam = isinstance(node, ast.Lambda)
+            kind = type(node)  # ast.parse makes no subclasses of its node types: tests by identity
+            if kind in _FUNCTION_NODES:
+                lam = kind is ast.Lambda
                 name = "<lambda>" if lam else node.name
                 if not lam:
                     scope.bound.add(name)
@@ -180,7 +186,7 @@ class Program:
                 inner.bound.update(x.arg for x in (a.vararg, a.kwarg) if x)
                 body = [node.body] if lam else node.body
                 todo += [(b, inner, func.qualname + ".", func.fid, None) for b in body]
-            elif isinstance(node, ast.ClassDef):
+            elif kind is ast.ClassDef:
                 scope.bound.add(node.name)
                 todo += [(d, scope, prefix, fid, cid)
                          for d in node.decorator_list + node.bases + [k.value for k in node.keywords]]
@@ -190,7 +196,7 @@ class Program:
                 body_scope = _Scope(None)  # class bodies bind class attributes, not locals
                 body_scope.read = scope.read
                 todo += [(b, body_scope, klass.qualname + ".", fid, klass.cid) for b in node.body]
-            elif isinstance(node, _COMPREHENSIONS):
+            elif kind in _COMPREHENSIONS:
                 # The first iterable runs in the enclosing scope; targets stay in the
                 # comprehension (the interpreter evaluates it inline); reads count outside.
                 comp = _Scope(None)
@@ -204,13 +210,15 @@ class Program:
                 elts = [node.key, node.value] if isinstance(node, ast.DictComp) else [node.elt]
                 todo += [(e, comp, prefix, fid, cid) for e in elts]
             else:
-                if isinstance(node, ast.Name):
+                if kind is ast.Name:
                     (scope.read if isinstance(node.ctx, ast.Load) else scope.bound).add(node.id)
                     if isinstance(node.ctx, ast.Load):
                         self.read_names.add(node.id)
-                elif isinstance(node, ast.Attribute):
+                elif kind is ast.Attribute:
                     (self.read_names if isinstance(node.ctx, ast.Load) else self.stored_attrs).add(node.attr)
-                elif isinstance(node, ast.alias):
+                elif kind not in _BINDING_NODES:
+                    pass
+                elif kind is ast.alias:
                     if node.name != "*":
                         scope.bound.add((node.asname or node.name).split(".")[0])
                 elif isinstance(node, ast.Global):
@@ -227,8 +235,7 @@ class Program:
                     scope.generator = True
                 elif isinstance(node, ast.NamedExpr) and isinstance(node.target, ast.Name):
                     scope.bound.add(node.target.id)
-                todo += [(c, scope, prefix, fid, cid) for c in ast.iter_child_nodes(node)
-                         if not isinstance(c, _NOTHING_INSIDE)]
+                todo += [(c, scope, prefix, fid, cid) for c in _child_nodes(node)]
             stack.extend(reversed(todo))
         mod.globals = frozenset(top.bound - top.glob)
         for sc in scopes:
@@ -294,6 +301,20 @@ class Program:
                 return parent
             parent = outer.parent
         return None
+
+
+def _child_nodes(node: ast.AST) -> list[ast.AST]:
+    """``ast.iter_child_nodes(node)`` without the nodes that hold nothing to collect, in the
+    same order; a plain loop over ``_fields``, as this walk visits every node of a module."""
+    out: list[ast.AST] = []
+    for name in node._fields:
+        value = getattr(node, name, None)
+        if isinstance(value, list):
+            out += [item for item in value
+                    if isinstance(item, ast.AST) and not isinstance(item, _NOTHING_INSIDE)]
+        elif isinstance(value, ast.AST) and not isinstance(value, _NOTHING_INSIDE):
+            out.append(value)
+    return out
 
 
 def _statement_imports(program: Program, mod: Module) -> frozenset[str]:

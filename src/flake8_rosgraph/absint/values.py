@@ -206,7 +206,7 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "soft", "hints", "_hash")
+    __slots__ = ("atoms", "soft", "hints", "_hash", "_repr")
 
     def __init__(self, items: frozenset | None, soft: bool = False,
                  hints: frozenset | None = frozenset()) -> None:
@@ -219,6 +219,7 @@ class Value:
         self.soft = soft and items is not None
         self.hints = hints if items is None else frozenset()
         self._hash = hash((items, self.soft, self.hints))
+        self._repr: str | None = None
 
     @property
     def depth(self) -> int:
@@ -253,6 +254,13 @@ class Value:
         return self._hash
 
     def __repr__(self) -> str:
+        # Kept once computed: values are immutable, and the engine orders atoms, tasks and
+        # effects by this text (nested values are rendered again for every container).
+        if self._repr is None:
+            self._repr = self._render()
+        return self._repr
+
+    def _render(self) -> str:
         if self.atoms is None:
             if self.hints is None:
                 return "⊤*"
@@ -342,8 +350,9 @@ def _unknown_with(hints: frozenset | None, more: frozenset | None) -> Value:
 def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     """The value holding exactly ``items`` (saturated ⊤ past the bounds)."""
     items = frozenset(items)
-    if any(type(a) in _CONTAINERS and a.depth > MAX_DEPTH for a in items):
-        return SATURATED
+    for a in items:
+        if type(a) in _CONTAINERS and a.depth > MAX_DEPTH:
+            return SATURATED
     return _bounded(items, soft)
 
 
@@ -360,7 +369,23 @@ def wrapped(atom: Atom) -> Atom:
 
 
 def const(value: ConstType) -> Value:
-    return Value(frozenset((Const.of(value),)))
+    # Shared per constant (values are immutable): the engine builds the same few constants
+    # (None, literals of the source) again on every run of every task.
+    key = (type(value), value)
+    try:
+        return _CONSTS[key]
+    except KeyError:
+        made = Value(frozenset((Const.of(value),)))
+        if len(_CONSTS) < _MAX_SHARED_CONSTS:
+            _CONSTS[key] = made
+        return made
+    except TypeError:  # unhashable: never shared
+        return Value(frozenset((Const.of(value),)))
+
+
+#: Bound on :data:`_CONSTS`, so that a long-lived process (a language server) stays bounded.
+_MAX_SHARED_CONSTS = 100_000
+_CONSTS: dict[tuple[type, ConstType], Value] = {}
 
 
 def join_all(values: Iterable[Value]) -> Value:
