@@ -33,6 +33,20 @@ EXTRA_FILES: dict[str, bytes] = {
     "src/extra/deep.py": ("import rclpy\nx = " + " + ".join(["'a'"] * 900) + "\n").encode(),
     "src/extra/duplicate/talker.py": b"import rclpy\nrclpy.create_node('talker_twin')\n",
     "stubs/broken.toml": b'[functions."x.y"]\nparams = 5\n',
+    # An included launch file chosen on two branches (one description source per branch).
+    "src/extra/launch/lidar.launch.py": (
+        b"import os\n\nfrom launch import LaunchDescription\n"
+        b"from launch.actions import IncludeLaunchDescription\n"
+        b"from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        b"from launch.substitutions import LaunchConfiguration\n\n\n"
+        b"def generate_launch_description():\n"
+        b"    if os.environ.get('LIDAR_MODEL', 'a') == 'a':\n"
+        b"        source = PythonLaunchDescriptionSource(\n"
+        b"            [LaunchConfiguration('lidar_dir', default='/opt/a'), '/a.launch.py'])\n"
+        b"    else:\n"
+        b"        source = PythonLaunchDescriptionSource(\n"
+        b"            [LaunchConfiguration('lidar_dir', default='/opt/b'), '/b.launch.py'])\n"
+        b"    return LaunchDescription([IncludeLaunchDescription(source)])\n"),
     "src/extra_cpp/package.xml": b"<package format=\"3\"><name>extra_cpp</name></package>\n",
     "src/extra_cpp/src/relay.cpp": b'#include "rclcpp/rclcpp.hpp"\nclass Relay : public rclcpp::Node {\n'
                                    b'public:\n  Relay() : Node("relay") {\n'

@@ -379,7 +379,7 @@ class PythonFront:
         value = self.field(obj, "condition")
         if value.is_bottom or value.consts() == [None]:
             return None
-        for atom in value:
+        for atom in sorted(value, key=_order):
             if isinstance(atom, Record):
                 short = self.kind(atom).rsplit(".", 1)[-1]
                 if short in ("IfCondition", "UnlessCondition"):
@@ -388,9 +388,11 @@ class PythonFront:
         return Condition(Unknown("a condition the analysis does not evaluate"))
 
     def source(self, value: Value) -> Subst:
-        for atom in value:
-            if isinstance(atom, Record) and self.kind(atom) in _SOURCES:
-                return self.subst(atom.field("launch_file_path") or BOTTOM)
+        sources = [atom for atom in value if isinstance(atom, Record) and self.kind(atom) in _SOURCES]
+        if len(sources) > 1:  # launch description sources built on several paths
+            return Unknown("one of several launch files")
+        if sources:
+            return self.subst(sources[0].field("launch_file_path") or BOTTOM)
         return self.subst(value)
 
     def arguments(self, value: Value) -> list[tuple[str, Subst]] | None:
