@@ -15,8 +15,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, SATURATED, TOP,
-                                           ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom,
-                                           ModuleAtom, Obj, Seq, Value, atoms, join_all, soften)
+                                           ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom, Input,
+                                           ModuleAtom, Obj, Seq, Value, atoms, from_input, join_all,
+                                           soften)
 
 LAWS = settings(max_examples=300, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
@@ -49,11 +50,17 @@ def _hinted(constants_: list[Const]) -> Value:
     return TOP.join(atoms(constants_))
 
 
+#: Outside inputs a value may be (a parameter of one of two objects).
+inputs = st.builds(Input, st.sampled_from(["a.py:1:0", "b.py:9:8"]), st.sampled_from(["param:t", "param:u"]))
+
+
 def _value_of(atom_lists: st.SearchStrategy) -> st.SearchStrategy[Value]:
-    return st.one_of(st.just(TOP), st.just(SATURATED), st.just(BOTTOM),
-                     st.lists(constants, min_size=1, max_size=14).map(_hinted),
-                     st.lists(constants, min_size=1, max_size=3).map(lambda c: soften(atoms(c))),
-                     st.lists(atom_lists, max_size=6).map(atoms))
+    plain = st.one_of(st.just(TOP), st.just(SATURATED), st.just(BOTTOM),
+                      st.lists(constants, min_size=1, max_size=14).map(_hinted),
+                      st.lists(constants, min_size=1, max_size=3).map(lambda c: soften(atoms(c))),
+                      st.lists(atom_lists, max_size=6).map(atoms))
+    # The same values as one outside input (a parameter's value, its default the atoms).
+    return st.one_of(plain, st.tuples(plain, inputs).map(lambda p: from_input(*p)))
 
 
 def _extend(inner: st.SearchStrategy) -> st.SearchStrategy:

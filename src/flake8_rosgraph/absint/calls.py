@@ -21,8 +21,8 @@ from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
-                     Extern, ExternBound, FuncAtom, Obj, Partial, Record, Seq, SuperAtom, Value, atoms,
-                     const, join_all, soften)
+                     Extern, ExternBound, FuncAtom, Input, Obj, Partial, Record, Seq, SuperAtom, Value,
+                     atoms, const, from_input, join_all, soften)
 
 
 class CallSemantics:
@@ -467,6 +467,16 @@ class CallSemantics:
         return TOP
 
     def ref(self, ref: Ref, bound: dict, receiver: Atom | None) -> Value:
+        value = self._ref_value(ref, bound, receiver)
+        if ref.input is None:
+            return value
+        on, template = ref.input
+        holders, keys = list(bound.get(on, TOP)), self.format_keys(template, bound)
+        if len(holders) != 1 or not isinstance(holders[0], Obj) or len(keys) != 1:
+            return value  # which object's setting, or which setting, is not known
+        return from_input(value, Input(holders[0].site, keys[0]))
+
+    def _ref_value(self, ref: Ref, bound: dict, receiver: Atom | None) -> Value:
         if ref.how == "arg":
             return bound.get(ref.data, TOP)
         if ref.how == "const":

@@ -13,7 +13,7 @@ A broken entry is skipped with a message naming the file and key; the rest loads
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Iterable
 
 try:
@@ -94,14 +94,27 @@ class Ref:
     (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
     stored earlier on the object in parameter ``on`` under ``key``), "field" (a
     field of the receiver record) or "constant" (the library constant a template names).
+
+    ``input`` (``(on, key template)``, from ``input = {on = …, key = …}``) says that the
+    value *is* a setting supplied from outside the program — the one the object in
+    parameter ``on`` holds under ``key`` — so the value carries that origin
+    (:class:`~.values.Input`) and a client can put the setting's real value in its place.
     """
 
     how: str
     data: Any
     on: str | None = None
+    input: tuple[str, str] | None = None
 
 
 def _ref(raw: Any, where: str) -> Ref:
+    if isinstance(raw, dict) and "input" in raw:
+        spec = raw["input"]
+        if not (isinstance(spec, dict) and set(spec) == {"on", "key"}
+                and all(isinstance(v, str) for v in spec.values())):
+            raise StubError(f"{where}: input must be {{on = PARAM, key = TEMPLATE}}; got {spec!r}")
+        rest = {k: v for k, v in raw.items() if k != "input"}
+        return replace(_ref(rest, where), input=(spec["on"], spec["key"]))
     if isinstance(raw, str):
         return Ref("arg", raw)
     if isinstance(raw, dict) and len(raw) >= 1:

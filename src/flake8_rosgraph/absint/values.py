@@ -14,6 +14,13 @@ objects): it keeps nothing and absorbs every join, so it is the top of the latti
 A hinted ⊤ *is* ⊤ to everything but the graph builder (``is_top``, no atoms, no
 constants): no branch is decided and no value computed from a hint.
 
+A value may also carry an *origin*: it **is** one input the program receives from outside
+(an :class:`Input`: a setting an object holds under a key, supplied when the program runs —
+the atoms, if any, are only its default).  Passing the value on keeps the origin; joining
+it with the same input keeps it; anything computed from it, or joined with anything else,
+is a plain value again.  A client that knows the input's value for one run (a deployment
+file) can put it in place of the default.  The origin decides nothing in the analysis.
+
 Atom sets and hint sets are bounded by :data:`MAX_ATOMS`; past the bound a value
 saturates, which makes every ascending chain finite — so joining is already a
 widening, and loops reach a fixpoint.
@@ -199,6 +206,15 @@ class Record:
         return None
 
 
+@dataclass(frozen=True, order=True)
+class Input:
+    """The setting ``key`` of the heap object allocated at ``holder``, supplied from outside
+    the program (its stored value, if any, is only the default)."""
+
+    holder: str
+    key: str
+
+
 Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, ExternBound,
              SuperAtom, Seq, Coll, DictAtom, Partial, Record]
 
@@ -206,19 +222,20 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "soft", "hints", "_hash", "_repr")
+    __slots__ = ("atoms", "soft", "hints", "origin", "_hash", "_repr")
 
     def __init__(self, items: frozenset | None, soft: bool = False,
-                 hints: frozenset | None = frozenset()) -> None:
+                 hints: frozenset | None = frozenset(), origin: Input | None = None) -> None:
         # ``None`` means ⊤.  ``soft``: these are defaults the environment may override
         # (a command-line option, a ROS parameter): good for naming what runs by
         # default, never for deciding a branch.  ⊤ is never soft.  ``hints``: for ⊤,
         # the constants it may also be (``None``: saturated, hints given up); empty
-        # for a known value.
+        # for a known value.  ``origin``: the outside input this value is (⊥ is no input).
         self.atoms = items
         self.soft = soft and items is not None
         self.hints = hints if items is None else frozenset()
-        self._hash = hash((items, self.soft, self.hints))
+        self.origin = origin if items is None or items else None
+        self._hash = hash((items, self.soft, self.hints, self.origin))
         self._repr: str | None = None
 
     @property
@@ -236,8 +253,9 @@ class Value:
 
     @property
     def is_saturated(self) -> bool:
-        """⊤ that keeps no hints and absorbs every join (the lattice's greatest element)."""
-        return self.hints is None
+        """⊤ that keeps no hints, is no input, and absorbs every join (the lattice's greatest
+        element)."""
+        return self.hints is None and self.origin is None
 
     def hinted(self) -> list[ConstType]:
         """The constants a ⊤ is known to include beside its unknown part (sorted by repr)."""
@@ -248,7 +266,7 @@ class Value:
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Value) and self.atoms == other.atoms and \
-            self.soft == other.soft and self.hints == other.hints
+            self.soft == other.soft and self.hints == other.hints and self.origin == other.origin
 
     def __hash__(self) -> int:
         return self._hash
@@ -261,23 +279,30 @@ class Value:
         return self._repr
 
     def _render(self) -> str:
+        origin = f"@{self.origin.holder}:{self.origin.key}" if self.origin is not None else ""
         if self.atoms is None:
             if self.hints is None:
-                return "⊤*"
-            return "⊤" + ("∪{" + ", ".join(sorted(map(repr, self.hints))) + "}" if self.hints else "")
+                return "⊤*" + origin
+            return "⊤" + ("∪{" + ", ".join(sorted(map(repr, self.hints))) + "}" if self.hints else "") \
+                + origin
         text = "{" + ", ".join(sorted(map(repr, self.atoms))) + "}"
-        return "~" + text if self.soft else text
+        return ("~" + text if self.soft else text) + origin
 
     # -- lattice operations ------------------------------------------------
     def join(self, other: "Value") -> "Value":
-        if self.atoms is None or other.atoms is None:
-            return _unknown_with(self._hint_part(), other._hint_part())
-        soft = self.soft or other.soft
-        if other.atoms <= self.atoms and soft == self.soft:
-            return self
-        if self.atoms <= other.atoms and soft == other.soft:
+        if other.atoms is not None and not other.atoms:
+            return self   # ⊥ is the identity (and is no input)
+        if self.atoms is not None and not self.atoms:
             return other
-        return _bounded(self.atoms | other.atoms, soft)
+        origin = self.origin if self.origin == other.origin else None
+        if self.atoms is None or other.atoms is None:
+            return _unknown_with(self._hint_part(), other._hint_part(), origin)
+        soft = self.soft or other.soft
+        if other.atoms <= self.atoms and soft == self.soft and origin == self.origin:
+            return self
+        if self.atoms <= other.atoms and soft == other.soft and origin == other.origin:
+            return other
+        return _bounded(self.atoms | other.atoms, soft, origin)
 
     def _hint_part(self) -> frozenset | None:
         """What this value adds to the hints of a ⊤ it is joined with: its constants
@@ -287,6 +312,10 @@ class Value:
         return self.atoms if all(type(a) is Const for a in self.atoms) else None
 
     def leq(self, other: "Value") -> bool:
+        if self.atoms is not None and not self.atoms:
+            return True
+        if other.origin is not None and other.origin != self.origin:
+            return False
         if other.atoms is None:
             if other.hints is None:
                 return True
@@ -330,20 +359,23 @@ BOTTOM = Value(frozenset())
 BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 
 
-def _bounded(items: frozenset, soft: bool = False) -> Value:
+def _bounded(items: frozenset, soft: bool = False, origin: Input | None = None) -> Value:
     if len(items) > MAX_ATOMS and (
             len(items) > MAX_OBJECTS or sum(type(a) is Const for a in items) > MAX_ATOMS):
-        return SATURATED
-    return Value(items, soft)
+        return _unknown_with(None, None, origin)
+    return Value(items, soft, origin=origin)
 
 
-def _unknown_with(hints: frozenset | None, more: frozenset | None) -> Value:
+def _unknown_with(hints: frozenset | None, more: frozenset | None,
+                  origin: Input | None = None) -> Value:
     """⊤ with the union of two hint sets (saturated when either is, or past the bound)."""
     if hints is None or more is None:
-        return SATURATED
+        return SATURATED if origin is None else Value(None, hints=None, origin=origin)
     union = hints | more
     if len(union) > MAX_ATOMS:
-        return SATURATED
+        return SATURATED if origin is None else Value(None, hints=None, origin=origin)
+    if origin is not None:
+        return Value(None, hints=union, origin=origin)
     return Value(None, hints=union) if union else TOP
 
 
@@ -354,6 +386,13 @@ def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
         if type(a) in _CONTAINERS and a.depth > MAX_DEPTH:
             return SATURATED
     return _bounded(items, soft)
+
+
+def from_input(value: Value, origin: Input) -> Value:
+    """``value`` as the outside input ``origin`` (⊥, no value yet, stays ⊥)."""
+    if value.is_bottom or value.origin == origin:
+        return value
+    return Value(value.atoms, value.soft, value.hints, origin)
 
 
 def soften(value: Value) -> Value:

@@ -299,6 +299,7 @@ class GraphBuilder:
                 # Which type goes with which name is not known (a name -> type table iterated
                 # in one loop): every pairing would invent wrong entities.
                 types = [None]
+            parameter = _own_parameter(eff.arg(name_arg), eff.arg("node"))
             for raw, partial in choices:
                 name, problem = self._resolve(raw, node)
                 if partial and problem:
@@ -309,7 +310,8 @@ class GraphBuilder:
                     else None
                 out.extend(Entity(kind, name, raw_name=raw, type=type_, qos=qos, callback=callback,
                                   invalid=problem, via=via[0] if via else None, name_text=written,
-                                  name_suffix=suffix, partial=partial, **common)
+                                  name_suffix=suffix, partial=partial, from_parameter=parameter,
+                                  **common)
                            for type_ in types)
             return out
         if eff.kind == "timer":
@@ -395,6 +397,21 @@ def resolve_name(raw: str | None, node: RosNode,
     return expanded, None if check.ok else check.reason
 
 
+#: The key under which the rclpy stub keeps a node's parameter (``param:{name}``).
+_PARAMETER_KEY = "param:"
+
+
+def _own_parameter(name: Value, node: Value) -> str | None:
+    """The parameter of the creating node whose value the name is, if it is one (the stubs
+    mark a parameter's value as the outside input ``param:NAME`` of its node object)."""
+    origin = name.origin
+    if origin is None or not origin.key.startswith(_PARAMETER_KEY):
+        return None
+    if not any(isinstance(obj, Obj) and obj.site == origin.holder for obj in node):
+        return None  # another object's parameter: launch sets it for that node, not this one
+    return origin.key[len(_PARAMETER_KEY):]
+
+
 def _class_name(program, obj: Obj) -> str | None:
     if isinstance(obj.cls, ClassAtom):
         return program.classes[obj.cls.cid].qualname
@@ -424,7 +441,7 @@ def _entity_order(e: Entity) -> tuple:
     """Sort key that is also the identity of an entity on its node."""
     return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
             e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
-            e.invalid or "", e.via or "", e.partial)
+            e.invalid or "", e.via or "", e.partial, e.from_parameter or "")
 
 
 def build_graph_from(analysis: Analysis) -> RosGraph:

@@ -1,8 +1,9 @@
 """The graph as JSON, per the public contract ``rosgraph/1`` (docs: graph-json.md).
 
 Key order and list order are fixed, so the same graph always serialises to the
-same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``partial``, ``language``, ``diagnostics``)
-are additions the contract allows; consumers ignore what they do not know.
+same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``partial``, ``from_parameter``,
+``language``, ``diagnostics``) are additions the contract allows; consumers ignore what they do
+not know.
 """
 from __future__ import annotations
 
@@ -40,6 +41,8 @@ def _entity(e: Entity) -> dict[str, Any]:
         out["via"] = e.via
     if e.partial:
         out["partial"] = True
+    if e.from_parameter is not None:
+        out["from_parameter"] = e.from_parameter
     return out
 
 

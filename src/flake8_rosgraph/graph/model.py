@@ -69,6 +69,14 @@ class Entity:
     #: (``param if launched else '/scan'``); the unknown rest is an entity of its own with
     #: name ``None`` at the same location.
     partial: bool = False
+    #: The name is the value of this parameter of its node (``declare_parameter('topic',
+    #: 'scan')`` … ``create_subscription(T, self.get_parameter('topic').value, …)``): ``name``
+    #: is its default (``None`` without one), and a launch file or parameter file that sets
+    #: the parameter names the entity where it starts the node.
+    from_parameter: str | None = None
+    #: Where the launch file or parameter file that names the entity sets ``from_parameter``
+    #: (for a launched node only), so that a finding can point at the value that is wrong.
+    name_set_at: Location | None = None
 
 
 @dataclass

@@ -120,11 +120,14 @@ class Instantiator:
     def instance(self, launched: LaunchedNode, code: RosNode) -> Instance:
         name, namespace = _node_name(launched, code), _namespace(launched, code)
         rules = [names.RemapRule(r.source, r.target) for r in launched.remaps]
+        fqn = RosNode(name, namespace, code.location).fqn
+        settings = self.settings(launched, fqn)
+        values = _set_values(settings)
         hits: set[int] = set()
         expanded: set[str] = set()
         entities: list[Entity] = []
         known = True
-        for entity in code.entities:
+        for entity in _named_by_parameters(code.entities, values):
             if entity.kind not in NAMED_KINDS:
                 entities.append(entity)
                 continue
@@ -146,7 +149,7 @@ class Instantiator:
                        conditional=code.conditional or launched.conditional,
                        invalid=code.invalid, entities=entities, language=code.language)
         node.launch = launch_info(launched)
-        return Instance(launched, node, code, frozenset(hits), self.settings(launched, node), known,
+        return Instance(launched, node, code, frozenset(hits), settings, known,
                         tuple(sorted(expanded)))
 
     @staticmethod
@@ -174,10 +177,10 @@ class Instantiator:
             return rule.replacement, check.reason, rules.index(rule)
         return remapped, None if check.ok else check.reason, rules.index(rule)
 
-    def settings(self, launched: LaunchedNode, node: RosNode) -> list[tuple[str, Any, Location, str]]:
+    def settings(self, launched: LaunchedNode, fqn: str | None) -> list[tuple[str, Any, Location, str]]:
+        """The parameters that reach the launched node of full name ``fqn``."""
         out = [(p.name, p.value, p.location, "scope" if p.from_scope else "inline")
                for p in launched.params]
-        fqn = node.fqn
         for file in launched.param_files:
             sections = self.sections(file.path) if file.path is not None else "unresolved"
             if isinstance(sections, str) or fqn is None:
@@ -186,6 +189,46 @@ class Instantiator:
                 if section.matches(fqn):
                     out.extend((n, v, loc, "file") for n, v, loc in section.settings)
         return out
+
+
+#: A parameter that the launch sets to different values (or to one the analysis cannot read).
+_UNKNOWN_SETTING = object()
+
+
+def _set_values(settings: list[tuple[str, Any, Location, str]]) -> dict[str, tuple[Any, Location]]:
+    """Each parameter the launch sets, with its value and where it is first set: the one
+    value every setting of it agrees on, else :data:`_UNKNOWN_SETTING` — which of several
+    settings wins depends on how launch orders sources, and a guessed name is worse than an
+    unknown one."""
+    out: dict[str, tuple[Any, Location]] = {}
+    for name, value, location, _origin in settings:
+        if name in out and out[name][0] != value:
+            out[name] = (_UNKNOWN_SETTING, out[name][1])
+        else:
+            out.setdefault(name, (value, location))
+    return out
+
+
+def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Location]]) -> list[Entity]:
+    """The entities as the launch's parameter values name them: an entity whose name is a
+    parameter the launch sets takes the value set (unknown when it is no single string)
+    instead of the default in code.  The alternatives of a partly known default collapse
+    into the one entity the value names."""
+    out: list[Entity] = []
+    seen: set[tuple] = set()
+    for entity in entities:
+        if entity.from_parameter is None or entity.from_parameter not in values:
+            out.append(entity)
+            continue
+        value, location = values[entity.from_parameter]
+        raw = value if isinstance(value, str) else None
+        renamed = replace(entity, name=None, raw_name=raw, invalid=None, name_suffix=None,
+                          partial=False, name_set_at=location)
+        key = (renamed.kind, renamed.location, renamed.type, raw)
+        if key not in seen:
+            seen.add(key)
+            out.append(renamed)
+    return out
 
 
 def instantiate(root: Path, graph: RosGraph, systems: list[System]) -> None:

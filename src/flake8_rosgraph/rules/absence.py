@@ -62,13 +62,13 @@ from __future__ import annotations
 from collections import Counter
 from typing import ClassVar, Iterator
 
-from ..graph.model import PEER_KIND, RosGraph
+from ..graph.model import PEER_KIND, Entity, RosGraph
 from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
 from .near_miss import NearMissFinder
 from .topics import Endpoint, EndpointIndex, namespace_of
-from .vocabulary import NAME_NOUN, VERB, related
+from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
 
 
 class AbsenceRule(Rule):
@@ -131,7 +131,10 @@ class AbsenceRule(Rule):
                 scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
         """``slip_only``: an unknown name may be the partner, so only a slip is worth saying."""
         entity = endpoint.entity
-        head = f"{NAME_NOUN[self.kind]} '{entity.name}' has no {self.missing}"
+        origin_words = name_origin(entity)
+        named = f"'{entity.name}' ({origin_words})" if origin_words else f"'{entity.name}'"
+        head = f"{NAME_NOUN[self.kind]} {named} has no {self.missing}"
+        origin = origin_related(entity)
         near = near_misses.find(endpoint)
         if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
@@ -141,10 +144,16 @@ class AbsenceRule(Rule):
         if near is not None:
             peer = near.peer.entity
             message = (f"{head}; did you mean '{near.name}' "
-                       f"({VERB[peer.kind]} at {peer.location.short()})?")
-            yield Finding(entity.location, self.code, message, (related(peer),))
+                       f"({VERB[peer.kind]} at {_where(peer)})?")
+            yield Finding(entity.location, self.code, message, origin + (related(peer),) + origin_related(peer))
         elif not interface:
-            yield Finding(entity.location, self.code, head)
+            yield Finding(entity.location, self.code, head, origin)
         elif self.report_interfaces:
             message = f"{head} in the workspace; if something outside uses it, add it to --rosgraph-external-topics"
-            yield Finding(entity.location, self.code, message)
+            yield Finding(entity.location, self.code, message, origin)
+
+
+def _where(entity: Entity) -> str:
+    """Where the other end stands, and where a launch named it if it did."""
+    origin_words = name_origin(entity)
+    return entity.location.short() + (f", {origin_words}" if origin_words else "")

@@ -35,3 +35,18 @@ def related(entity: Entity) -> tuple[Location, str]:
     """A related location for :attr:`Finding.related`: where, and what stands there."""
     name = f" '{entity.name}'" if entity.name is not None else ""
     return entity.location, f"{ENTITY_NOUN[entity.kind]}{name}"
+
+
+def name_origin(entity: Entity) -> str | None:
+    """Where a name a launch set through a parameter comes from, for a message (``parameter
+    'topic' set at launch/robot.launch.py:12``); ``None`` for other names."""
+    if entity.from_parameter is None or entity.name_set_at is None:
+        return None
+    return f"parameter '{entity.from_parameter}' set at {entity.name_set_at.short()}"
+
+
+def origin_related(entity: Entity) -> tuple[tuple[Location, str], ...]:
+    """The setting that names ``entity``, as a related location (none for other names)."""
+    if entity.from_parameter is None or entity.name_set_at is None:
+        return ()
+    return ((entity.name_set_at, f"parameter '{entity.from_parameter}' = '{entity.name}'"),)
