@@ -184,6 +184,54 @@ def test_a_parameter_no_node_of_the_process_declares(tmp_path, analyse_root):
          "did you mean 'offset'?")]
 
 
+# -- ROS204 and shared parameter files -----------------------------------------------------------
+
+SHARED_YAML = """
+    /**:
+      ros__parameters:
+        frame_id: base_footprint
+        range_max: 25.0
+        exposure: 0.02
+        course_name: figure_eight
+        {extra}
+    """
+
+
+def _shared(tmp_path: Path, extra: str = "", *more: str) -> Path:
+    return workspace(tmp_path, {"sensors.launch.py": launch_py(
+        "Node(package='drivers', executable='lidar', parameters=['src/drivers/config/shared.yaml'])",
+        "Node(package='drivers', executable='camera', parameters=['src/drivers/config/shared.yaml'])",
+        *more)}, extra={"config/shared.yaml": SHARED_YAML.format(extra=extra)})
+
+
+def test_a_shared_section_reaches_nodes_that_each_declare_part_of_it(tmp_path, analyse_root):
+    # 'course_name' is read by the launch file or another tool: no node of it is near it.
+    assert findings(analyse_root, _shared(tmp_path), ("ROS2",)) == []
+
+
+def test_a_near_miss_in_a_shared_section_is_reported_once(tmp_path, analyse_root):
+    assert findings(analyse_root, _shared(tmp_path, "exposur: 0.03"), ("ROS2",)) == [
+        ("ROS204", "src/drivers/config/shared.yaml:7",
+         "parameter 'exposur' is set for nodes '/camera', '/lidar', none of which declares it; "
+         "did you mean 'exposure'?")]
+
+
+def test_a_setting_that_also_reaches_a_node_without_code_is_not_judged(tmp_path, analyse_root):
+    real = "Node(package='gripper_driver', executable='gripper_node', name='gripper', " \
+           "parameters=['src/drivers/config/gripper.yaml'], condition=UnlessCondition('false'))"
+    fake = "Node(package='drivers', executable='lidar', name='gripper', " \
+           "parameters=['src/drivers/config/gripper.yaml'])"
+    files = {"config/gripper.yaml": "gripper:\n  ros__parameters:\n    grasp_force: 20.0\n"}
+    imports = "from launch.conditions import UnlessCondition\n"
+    # the file also configures the installed (C++) driver, which the analysis cannot see
+    root = workspace(tmp_path, {"gripper.launch.py": imports + launch_py(real, fake)}, extra=files)
+    assert findings(analyse_root, root, ("ROS2",)) == []
+    root = workspace(tmp_path / "alone", {"gripper.launch.py": launch_py(fake)}, extra=files)
+    assert findings(analyse_root, root, ("ROS2",)) == [
+        ("ROS204", "src/drivers/config/gripper.yaml:3",
+         "parameter 'grasp_force' is set for node '/gripper', which never declares it")]
+
+
 # -- ROS202 and private remaps --------------------------------------------------------------------
 
 def test_a_private_remap_that_matches_nothing(tmp_path, analyse_root):

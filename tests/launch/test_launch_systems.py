@@ -43,7 +43,7 @@ def test_system_is_instantiated_per_rcl(ws, ext):
         ("/r1/listener", "demo_py/listener", (("subscriptions", "/r1/chatter"),), ()),
         # launch name overrides the code's 'talker'; pushed namespace from the 'robot' argument
         ("/r1/speaker", "demo_py/talker", (("parameters", "rate"), ("publishers", "/r1/chatter")),
-         (("rate", "file"), ("rate", "inline"), ("rte", "file"))),
+         (("rate", "inline"), ("rate", "shared file"), ("rte", "shared file"))),
         ("/r2/talker", "demo_py/talker", (("parameters", "rate"), ("publishers", "/r2/chatter")), ()),
     ]
     assert system.files == [BRINGUP + f"system.launch.{ext}", BRINGUP + f"sub.launch.{ext}"]

@@ -187,7 +187,8 @@ class Instantiator:
                 continue
             for section in sections:
                 if section.matches(fqn):
-                    out.extend((n, v, loc, "file") for n, v, loc in section.settings)
+                    origin = "shared file" if section.shared else "file"
+                    out.extend((n, v, loc, origin) for n, v, loc in section.settings)
         return out
 
 

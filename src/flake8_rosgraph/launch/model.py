@@ -120,7 +120,8 @@ class Instance:
     """A launched node bound to a code-level node: the node as rcl would create it.
 
     ``settings`` are the parameters that reach the node (``(name, value,
-    location, origin)``, origin ``"scope"``, ``"inline"`` or ``"file"``);
+    location, origin)``, origin ``"scope"``, ``"inline"``, ``"file"`` or ``"shared file"``, a
+    file section with a wildcard such as ``/**``);
     ``remap_hits`` the indexes of ``launched.remaps`` that matched a name.
     """
 

@@ -29,6 +29,11 @@ class Section:
     #: The line of the key that holds ``ros__parameters`` (the node key), for ROS205.
     location: Location | None = None
 
+    @property
+    def shared(self) -> bool:
+        """A section with a wildcard (``/**``, ``*``) is meant for every node it matches."""
+        return "*" in self.pattern
+
     def matches(self, fqn: str) -> bool:
         return _pattern_regex(self.pattern).fullmatch(fqn) is not None
 
