@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
+from flake8_rosgraph.analysis import analyse, build_graph
+from flake8_rosgraph.explain import explain
 from flake8_rosgraph.graph.model import Location
 from flake8_rosgraph.launch.api import judged_graph
 
@@ -206,3 +207,51 @@ def test_another_nodes_parameter_does_not_name_the_entity(tmp_path: Path):
     }, {"bridge": "bridge"})
     graph = build_graph(write(tmp_path, files))
     assert named(graph, "/bridge") == {11: {("/bridged", None)}}
+
+
+def test_parameters_declared_together_keep_their_defaults_and_names(tmp_path: Path):
+    files = package("camera", {
+        "camera": """
+            import rclpy
+            from rclpy.node import Node
+            from sensor_msgs.msg import CameraInfo, Image
+
+            OUTPUTS = [('image_topic', 'image_raw'), ('info_topic', 'camera_info')]
+
+
+            class Camera(Node):
+                def __init__(self):
+                    super().__init__('camera')
+                    self.declare_parameters('', OUTPUTS + [('frame_id', 'camera')])
+                    self.declare_parameters('stream', [('topic', 'stream'), ('fps', 30)])
+                    image = self.get_parameter('image_topic').value
+                    self.create_publisher(Image, image, 10)
+                    self.create_publisher(CameraInfo, self.get_parameter('info_topic').value, 10)
+                    self.create_publisher(Image, self.get_parameter('stream.topic').value, 10)
+                    self.create_publisher(Image, self.get_parameter('topic').value, 10)
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Camera())
+        """,
+    }, {"camera": "camera"})
+    graph = build_graph(write(tmp_path, files))
+    assert named(graph, "/camera") == {
+        14: {("/image_raw", "image_topic")}, 15: {("/camera_info", "info_topic")},
+        16: {("/stream", "stream.topic")},
+        17: {(None, "topic")},  # declared only as 'stream.topic': no default
+    }
+
+
+def test_explain_says_which_parameter_an_unknown_name_is(tmp_path: Path):
+    unlaunched = {path: text for path, text in LAUNCHED.items() if not path.startswith("bringup/")}
+    graph, analysis = analyse(write(tmp_path, unlaunched))
+    report = explain(analysis, graph)
+    monitor = next(e for e in report.explanations
+                   if e.site.path.endswith("monitor.py") and e.site.line == 12)
+    assert monitor.status == "unknown"
+    assert any("ROS parameter 'scan_topic' of its node, which has no default in code" in reason
+               for reason in monitor.reasons), monitor.reasons
+    driver = [e for e in report.explanations if e.site.path.endswith("driver.py") and e.site.line == 13]
+    assert [e.status for e in driver] == ["complete"]  # its default names it

@@ -106,6 +106,11 @@ def _template_params(template: str) -> set[str]:
 
 def _ref_problems(ref: Ref, params: set[str], where: str, allow_return: bool) -> list[str]:
     names = params | ({"@return"} if allow_return else set())
+    if ref.input is not None:
+        on, key = ref.input
+        missing = sorted((_template_params(key) | {on}) - names)
+        return [f"{where}.input: no parameter {p!r}" for p in missing] + _ref_problems(
+            Ref(ref.how, ref.data, ref.on), params, where, allow_return)
     if ref.how == "arg" and ref.data not in names:
         return [f"{where}: no parameter {ref.data!r}"]
     if ref.how in ("format", "constant"):
@@ -135,9 +140,13 @@ def _model_problems(model: FunctionModel) -> list[str]:
             problems += _ref_problems(ref, params, f"{at}.{name}", allow_return=True)
     for i, store in enumerate(model.stores):
         at = f"{where}.stores[{i}]"
+        # A store made per entry of ``each`` also names the entry's ``@key`` and ``@value``.
+        entry = params | {"@key", "@value"} if store.each is not None else params
+        if store.each is not None:
+            problems += _ref_problems(Ref("arg", store.each), params, f"{at}.each", allow_return=False)
         problems += _ref_problems(Ref("arg", store.on), params, f"{at}.on", allow_return=True)
-        problems += _ref_problems(Ref("format", store.key), params, f"{at}.key", allow_return=False)
-        problems += _ref_problems(store.value, params, f"{at}.value", allow_return=True)
+        problems += _ref_problems(Ref("format", store.key), entry, f"{at}.key", allow_return=False)
+        problems += _ref_problems(store.value, entry, f"{at}.value", allow_return=True)
     if model.returns.how == "ref":
         problems += _ref_problems(model.returns.data, params, f"{where}.returns",
                                   allow_return=False)
@@ -288,7 +297,7 @@ BROKEN: dict[str, tuple[str, str]] = {
                              "functions.'acme.f'.callbacks: expected a list of strings"),
     "store missing a key": ('[functions."acme.f"]\nparams = "self, v"\n'
                             'stores = [{ on = "self", key = "k" }]\n',
-                            "functions.'acme.f'.stores[0]: needs exactly on, key, value"),
+                            "functions.'acme.f'.stores[0]: needs on, key, value (and may have each)"),
     "returned record with unknown key": ('[functions."acme.f"]\n'
                                          'returns = { record = "acme.R", field = {} }\n',
                                          "functions.'acme.f'.returns: unknown key 'field'"),

@@ -239,7 +239,7 @@ class _Explainer:
             if field == "node":
                 reasons.extend(self._presumed_reasons(key))
                 continue
-            found = self._owner_reasons(key) if field == "name" else []
+            found = self._owner_reasons(key) + self._parameter_reasons(key) if field == "name" else []
             if not found:  # the written value itself is unknown
                 argument = self._field_argument(call, model, effects, field)
                 found = self._origin_reasons(call, scope, argument, module)
@@ -275,6 +275,14 @@ class _Explainer:
             if any(n.unresolved_base for n, _ in found):
                 out.append("unknown node")
         return out
+
+    def _parameter_reasons(self, key: tuple) -> list[str]:
+        """Unknown names that are a parameter of their node without a default in code."""
+        parameters = sorted({e.from_parameter for _, e in self.graph_entities.get(key, [])
+                             if e.name is None and e.from_parameter is not None})
+        return [f"it is ROS parameter '{p}' of its node, which has no default in code; "
+                "where a launch file sets it, `graph --launch FILE` shows the name"
+                for p in parameters]
 
     def _why_not_created(self, module: Module, call: ast.Call, scope: ast.AST | None) -> list[str]:
         if ("mod", module.name, ()) not in self.an.effects:

@@ -12,6 +12,7 @@ import itertools
 import posixpath
 import string
 from dataclasses import dataclass
+from typing import Iterator
 
 from .callgraph import CallSite
 from .engine import Effect
@@ -443,11 +444,12 @@ class CallSemantics:
         self.record_call(node, ("lib", model.qualname), tuple(sorted(bound.items())),
                          tuple(recorded))
         for store in model.stores:
-            value = self.ref(store.value, bound, receiver)
-            for key in self.format_keys(store.key, bound):
-                for atom in bound.get(store.on, TOP):
-                    if isinstance(atom, Obj):
-                        self.an.write(("a", atom.site, key), value)
+            for scope in _store_scopes(store, bound):
+                value = self.ref(store.value, scope, receiver)
+                for key in self.format_keys(store.key, scope):
+                    for atom in scope.get(store.on, TOP):
+                        if isinstance(atom, Obj):
+                            self.an.write(("a", atom.site, key), value)
         for name in model.callbacks:
             for atom in bound.get(name, BOTTOM):
                 self.schedule_callback(atom)
@@ -738,8 +740,34 @@ def _rooted(value: Value) -> list[str] | None:
     return sorted({posixpath.join("/", c or "") for c in consts})
 
 
+def _dotted(value: Value) -> list[str] | None:
+    """Every possible prefix as the front of a dotted name: ``''`` and ``None`` stay empty,
+    ``'ns'`` becomes ``'ns.'``."""
+    consts = value.consts()
+    if not consts or not all(c is None or isinstance(c, str) for c in consts):
+        return None
+    return sorted({f"{c}." if c else "" for c in consts})
+
+
 #: Filters usable in library-model key templates (``{param|filter}``).
-KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted}
+KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted}
+
+
+def _store_scopes(store, bound: dict) -> Iterator[dict]:
+    """The bindings one store is made with: ``bound`` itself, or with ``each``, ``bound``
+    plus ``@key``/``@value`` for every ``(key, value, …)`` entry of a list of known length
+    (entries of a list of unknown length are not stored: nothing is invented)."""
+    if store.each is None:
+        yield bound
+        return
+    for table in bound.get(store.each, TOP):
+        if not isinstance(table, Seq):
+            continue
+        for item in table.items:
+            for entry in item:
+                if isinstance(entry, Seq) and entry.items:
+                    value = entry.items[1] if len(entry.items) > 1 else TOP
+                    yield {**bound, "@key": entry.items[0], "@value": value}
 
 
 @dataclass(frozen=True)

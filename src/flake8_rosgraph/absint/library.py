@@ -146,9 +146,15 @@ class EffectSpec:
 
 @dataclass(frozen=True)
 class StoreSpec:
+    """What a call keeps on an object: ``value`` under the key template ``key``.  With
+    ``each`` (a parameter holding a list of ``(key, value, …)`` tuples), one store per
+    entry, whose first item the templates name ``@key`` and second ``@value``
+    (``Node.declare_parameters``)."""
+
     on: str
     key: str          # a format template over parameters
     value: Ref
+    each: str | None = None
 
 
 @dataclass(frozen=True)
@@ -388,10 +394,11 @@ def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
     stores = []
     for i, st in enumerate(_list(raw.get("stores", []), where + ".stores")):
         st = _table(st, f"{where}.stores[{i}]")
-        if set(st) != {"on", "key", "value"}:
-            raise StubError(f"{where}.stores[{i}]: needs exactly on, key, value")
+        if not {"on", "key", "value"} <= set(st) <= {"on", "key", "value", "each"}:
+            raise StubError(f"{where}.stores[{i}]: needs on, key, value (and may have each)")
         stores.append(StoreSpec(str(st["on"]), str(st["key"]),
-                                _ref(st["value"], f"{where}.stores[{i}].value")))
+                                _ref(st["value"], f"{where}.stores[{i}].value"),
+                                str(st["each"]) if "each" in st else None))
     blocking = raw.get("blocking")
     if blocking is not None and (not isinstance(blocking, str) or not blocking.strip()):
         raise StubError(f"{where}.blocking: expected a non-empty string saying why the call blocks")
