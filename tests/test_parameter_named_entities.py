@@ -2,10 +2,11 @@
 
 A driver declares ``scan_topic`` with a default and publishes on its value; the launch
 file (inline, through a parameter file, or with ``SetParameter``) sets the real name.
-The graph keeps the default in code and marks the entity ``from_parameter``; where a
-launch file starts the node, the value it sets is the name — and where it cannot be read,
-the name is unknown, never the default.  What is *not* a parameter's value (a name built
-from it, one joined with a constant, another node's parameter) is never marked.
+The graph keeps the default in code and marks the entity ``from_parameter`` (or, for a name
+joined from parameters and text, ``name_template``); where a launch file starts the node,
+the values it sets make the name — and where one cannot be read, the name is unknown, never
+the default.  What is not known to be built from parameters (a value joined with a constant
+on another path, another node's parameter) is never marked.
 """
 from __future__ import annotations
 
@@ -82,10 +83,13 @@ def named(graph, fqn: str) -> dict[int, set[tuple[str | None, str | None]]]:
 
 def test_a_name_that_is_a_parameter_value_is_marked_and_keeps_its_default(tmp_path: Path):
     graph = build_graph(write(tmp_path, DRIVER))
+    driver = next(n for n in graph.nodes if n.fqn == "/lidar_driver")
+    assert [e.name_template for e in driver.entities if e.location.line == 17] == [
+        (("prefix", True), ("/diagnostics", False))]
     assert named(graph, "/lidar_driver") == {
         13: {("/scan", "scan_topic")},       # through a helper in another module and an attribute
         15: {("/status", "status_topic")},   # declare_parameter(...).value
-        17: {("/lidar/diagnostics", None)},  # built from the value: not the parameter itself
+        17: {("/lidar/diagnostics", None)},  # built from the value: a template (below)
         19: {("/heartbeat", None), (None, None)},  # the value or a constant
     }
 
@@ -251,7 +255,69 @@ def test_explain_says_which_parameter_an_unknown_name_is(tmp_path: Path):
     monitor = next(e for e in report.explanations
                    if e.site.path.endswith("monitor.py") and e.site.line == 12)
     assert monitor.status == "unknown"
-    assert any("ROS parameter 'scan_topic' of its node, which has no default in code" in reason
+    assert any("built from ROS parameter 'scan_topic' of its node, without a default in code" in reason
                for reason in monitor.reasons), monitor.reasons
     driver = [e for e in report.explanations if e.site.path.endswith("driver.py") and e.site.line == 13]
     assert [e.status for e in driver] == ["complete"]  # its default names it
+
+
+def test_names_joined_from_parameters_follow_the_launch_values(tmp_path: Path):
+    files = package("racer", {
+        "bridge": """
+            import rclpy
+            from nav_msgs.msg import Odometry
+            from rclpy.node import Node
+            from sensor_msgs.msg import LaserScan
+
+
+            class Bridge(Node):
+                def __init__(self):
+                    super().__init__('bridge')
+                    self.declare_parameter('ego_namespace', 'ego_racecar')
+                    self.declare_parameter('odom_topic', 'odom')
+                    self.declare_parameter('scan_topic')
+                    ns = self.get_parameter('ego_namespace').value
+                    odom = ns + '/' + self.get_parameter('odom_topic').value
+                    self.create_publisher(Odometry, odom, 10)
+                    scan = self.get_parameter('scan_topic').value
+                    self.create_publisher(LaserScan, f'/{ns}/{scan}', 10)
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Bridge())
+        """,
+    }, {"bridge": "bridge"})
+    files["racer/config/sim.yaml"] = """
+        bridge:
+          ros__parameters:
+            ego_namespace: car1
+            odom_topic: odometry
+            scan_topic: front_scan
+    """
+    files["racer/launch/sim.launch.py"] = """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package='racer', executable='bridge', parameters=['racer/config/sim.yaml']),
+            ])
+    """
+    files["racer/launch/half.launch.py"] = """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package='racer', executable='bridge', parameters=[{'ego_namespace': 'car2'}]),
+            ])
+    """
+    graph = build_graph(write(tmp_path, files))
+    assert named(graph, "/bridge") == {15: {("/ego_racecar/odom", None)}, 17: {(None, None)}}
+    assert launched(graph, "sim.launch.py")["/bridge"] == {
+        15: {("/car1/odometry", None)}, 17: {("/car1/front_scan", None)}}
+    # Only the namespace set: the topic parameters keep no default of their own to rebuild from.
+    assert launched(graph, "half.launch.py")["/bridge"] == {15: {(None, None)}, 17: {(None, None)}}

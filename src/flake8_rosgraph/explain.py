@@ -278,10 +278,11 @@ class _Explainer:
 
     def _parameter_reasons(self, key: tuple) -> list[str]:
         """Unknown names that are a parameter of their node without a default in code."""
-        parameters = sorted({e.from_parameter for _, e in self.graph_entities.get(key, [])
-                             if e.name is None and e.from_parameter is not None})
-        return [f"it is ROS parameter '{p}' of its node, which has no default in code; "
-                "where a launch file sets it, `graph --launch FILE` shows the name"
+        parameters = sorted({e.name_parameters for _, e in self.graph_entities.get(key, [])
+                             if e.name is None and e.name_parameters})
+        return [f"it is built from ROS {_plural(len(p), 'parameter')} "
+                f"{', '.join(repr(n) for n in p)} of its node, without a default in code; "
+                "where a launch file sets them, `graph --launch FILE` shows the name"
                 for p in parameters]
 
     def _why_not_created(self, module: Module, call: ast.Call, scope: ast.AST | None) -> list[str]:
@@ -613,3 +614,7 @@ def _binding_of(name: str, scope: ast.AST | None, call: ast.Call) -> str | None:
                 isinstance(t, ast.Name) and t.id == name for t in ast.walk(node.optional_vars)):
             return f"it depends on `{name}` bound by `with {_short(node.context_expr)}`"
     return None
+
+
+def _plural(count: int, noun: str) -> str:
+    return noun if count == 1 else noun + "s"

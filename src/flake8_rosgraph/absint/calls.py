@@ -484,7 +484,8 @@ class CallSemantics:
         if ref.how == "const":
             return ref.data
         if ref.how == "overridable":
-            return soften(bound.get(ref.data, TOP))
+            value = bound.get(ref.data, TOP)
+            return TOP if ref.none_is_unset and value.consts() == [None] else soften(value)
         if ref.how == "format":
             keys = self.format_keys(ref.data, bound)
             return _soft_like(ref.data, bound, atoms(Const.of(k) for k in keys)) if keys else TOP

@@ -14,7 +14,7 @@ from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
-                     join_all)
+                     join_all, joined)
 
 
 class ExpressionSemantics:
@@ -56,18 +56,23 @@ class ExpressionSemantics:
 
     def e_JoinedStr(self, node: ast.JoinedStr) -> Value:
         parts = []
+        pieces = []  # the parts as text, an input's value as it is when formatted plainly
         for part in node.values:
             if isinstance(part, ast.Constant):
                 parts.append(const(str(part.value)))
+                pieces.append(parts[-1])
             elif isinstance(part, ast.FormattedValue):
                 value = self.eval(part.value)
+                plain = part.conversion in (-1, ord("s")) and part.format_spec is None
                 if part.conversion in (ord("r"), ord("a")):
                     value = fold(repr, [value])
                 spec = self.eval(part.format_spec) if part.format_spec else const("")
                 parts.append(fold(format, [value, spec]))
+                pieces.append(value if plain else parts[-1])
             else:
                 parts.append(TOP)
-        return fold(lambda *p: "".join(p), parts)
+                pieces.append(TOP)
+        return joined(fold(lambda *p: "".join(p), parts), pieces)
 
     def e_BinOp(self, node: ast.BinOp) -> Value:
         return self.binop(node.op, self.eval(node.left), self.eval(node.right))
@@ -88,6 +93,8 @@ class ExpressionSemantics:
             if items and all(isinstance(a, Seq) for a in items) and len(items) == 2:
                 a, b = items
                 return atoms([Seq(a.kind, a.items + b.items)])
+        if isinstance(op, ast.Add):
+            return joined(fold(fn, [left, right]), [left, right])
         return fold(fn, [left, right])
 
     def e_UnaryOp(self, node: ast.UnaryOp) -> Value:

@@ -105,6 +105,9 @@ class Ref:
     data: Any
     on: str | None = None
     input: tuple[str, str] | None = None
+    #: With "overridable" (``none_is_unset = true``): ``None`` is no default at all — the
+    #: value is unknown until the environment sets it (``declare_parameter('topic')``).
+    none_is_unset: bool = False
 
 
 def _ref(raw: Any, where: str) -> Ref:
@@ -123,6 +126,9 @@ def _ref(raw: Any, where: str) -> Ref:
             return Ref("arg", raw["arg"])
         if keys == {"overridable"} and isinstance(raw["overridable"], str):
             return Ref("overridable", raw["overridable"])
+        if keys == {"overridable", "none_is_unset"} and isinstance(raw["overridable"], str) \
+                and isinstance(raw["none_is_unset"], bool):
+            return Ref("overridable", raw["overridable"], none_is_unset=raw["none_is_unset"])
         if keys == {"const"}:
             return Ref("const", from_data(raw["const"]))
         if keys == {"format"} and isinstance(raw["format"], str):

@@ -215,6 +215,18 @@ class Input:
     key: str
 
 
+@dataclass(frozen=True)
+class Joined:
+    """A string joined, in order, from constant text and outside inputs (``ns + '/scan'``
+    where ``ns`` is an :class:`Input`): a client that knows every input's value can rebuild it."""
+
+    parts: tuple[Union[str, Input], ...]
+
+
+#: Where a value comes from outside the program: one input, or text joined from inputs.
+Origin = Union[Input, Joined]
+
+
 Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, ExternBound,
              SuperAtom, Seq, Coll, DictAtom, Partial, Record]
 
@@ -225,7 +237,7 @@ class Value:
     __slots__ = ("atoms", "soft", "hints", "origin", "_hash", "_repr")
 
     def __init__(self, items: frozenset | None, soft: bool = False,
-                 hints: frozenset | None = frozenset(), origin: Input | None = None) -> None:
+                 hints: frozenset | None = frozenset(), origin: Origin | None = None) -> None:
         # ``None`` means ⊤.  ``soft``: these are defaults the environment may override
         # (a command-line option, a ROS parameter): good for naming what runs by
         # default, never for deciding a branch.  ⊤ is never soft.  ``hints``: for ⊤,
@@ -279,7 +291,7 @@ class Value:
         return self._repr
 
     def _render(self) -> str:
-        origin = f"@{self.origin.holder}:{self.origin.key}" if self.origin is not None else ""
+        origin = "@" + _origin_text(self.origin) if self.origin is not None else ""
         if self.atoms is None:
             if self.hints is None:
                 return "⊤*" + origin
@@ -359,7 +371,13 @@ BOTTOM = Value(frozenset())
 BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 
 
-def _bounded(items: frozenset, soft: bool = False, origin: Input | None = None) -> Value:
+def _origin_text(origin: Origin) -> str:
+    if isinstance(origin, Input):
+        return f"{origin.holder}:{origin.key}"
+    return "+".join(repr(p) if isinstance(p, str) else _origin_text(p) for p in origin.parts)
+
+
+def _bounded(items: frozenset, soft: bool = False, origin: Origin | None = None) -> Value:
     if len(items) > MAX_ATOMS and (
             len(items) > MAX_OBJECTS or sum(type(a) is Const for a in items) > MAX_ATOMS):
         return _unknown_with(None, None, origin)
@@ -367,7 +385,7 @@ def _bounded(items: frozenset, soft: bool = False, origin: Input | None = None) 
 
 
 def _unknown_with(hints: frozenset | None, more: frozenset | None,
-                  origin: Input | None = None) -> Value:
+                  origin: Origin | None = None) -> Value:
     """⊤ with the union of two hint sets (saturated when either is, or past the bound)."""
     if hints is None or more is None:
         return SATURATED if origin is None else Value(None, hints=None, origin=origin)
@@ -388,11 +406,47 @@ def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     return _bounded(items, soft)
 
 
-def from_input(value: Value, origin: Input) -> Value:
-    """``value`` as the outside input ``origin`` (⊥, no value yet, stays ⊥)."""
+def from_input(value: Value, origin: Origin) -> Value:
+    """``value`` as coming from outside as ``origin`` (⊥, no value yet, stays ⊥)."""
     if value.is_bottom or value.origin == origin:
         return value
     return Value(value.atoms, value.soft, value.hints, origin)
+
+
+def _text_parts(value: Value) -> tuple[Union[str, Input], ...] | None:
+    """``value`` as text parts: the inputs it comes from, or its one known string (``None``
+    when it is neither, e.g. a default that is not labelled with what overrides it)."""
+    if isinstance(value.origin, Input):
+        return (value.origin,)
+    if isinstance(value.origin, Joined):
+        return value.origin.parts
+    strings = value.strings()
+    if strings is not None and len(strings) == 1 and not value.soft:
+        return (strings[0],)
+    return None
+
+
+def joined(result: Value, pieces: list[Value]) -> Value:
+    """``result``, the concatenation of the strings ``pieces``, with the inputs it is built
+    from when every piece is an input or known text and one is known text (so that it is
+    surely a string concatenation): ``ns + '/scan'``, ``f'{ns}/scan'``."""
+    if not any(p.origin is not None for p in pieces):
+        return result
+    parts: list[Union[str, Input]] = []
+    texts = 0
+    for piece in pieces:
+        found = _text_parts(piece)
+        if found is None:
+            return result
+        texts += isinstance(piece.origin, Joined) or piece.origin is None
+        for part in found:
+            if isinstance(part, str) and parts and isinstance(parts[-1], str):
+                parts[-1] += part
+            elif part != "":
+                parts.append(part)
+    if not texts:
+        return result
+    return from_input(result, Joined(tuple(parts)))
 
 
 def soften(value: Value) -> Value:

@@ -20,8 +20,8 @@ from dataclasses import dataclass
 from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
-from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Obj, Record,
-                             Seq, Coll, Value, wrapped)
+from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Input,
+                             Joined, Obj, Record, Seq, Coll, Value, wrapped)
 from . import names
 from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
@@ -299,7 +299,7 @@ class GraphBuilder:
                 # Which type goes with which name is not known (a name -> type table iterated
                 # in one loop): every pairing would invent wrong entities.
                 types = [None]
-            parameter = _own_parameter(eff.arg(name_arg), eff.arg("node"))
+            template = _name_template(eff.arg(name_arg), eff.arg("node"))
             for raw, partial in choices:
                 name, problem = self._resolve(raw, node)
                 if partial and problem:
@@ -310,7 +310,7 @@ class GraphBuilder:
                     else None
                 out.extend(Entity(kind, name, raw_name=raw, type=type_, qos=qos, callback=callback,
                                   invalid=problem, via=via[0] if via else None, name_text=written,
-                                  name_suffix=suffix, partial=partial, from_parameter=parameter,
+                                  name_suffix=suffix, partial=partial, name_template=template,
                                   **common)
                            for type_ in types)
             return out
@@ -401,15 +401,23 @@ def resolve_name(raw: str | None, node: RosNode,
 _PARAMETER_KEY = "param:"
 
 
-def _own_parameter(name: Value, node: Value) -> str | None:
-    """The parameter of the creating node whose value the name is, if it is one (the stubs
-    mark a parameter's value as the outside input ``param:NAME`` of its node object)."""
+def _name_template(name: Value, node: Value) -> tuple[tuple[str, bool], ...] | None:
+    """The name as text and parameters of the creating node, if it is built from them (the
+    stubs mark a parameter's value as the outside input ``param:NAME`` of its node object);
+    ``None`` when it is not, or when a part is another object's input (launch sets that
+    node's parameters, not this one's)."""
     origin = name.origin
-    if origin is None or not origin.key.startswith(_PARAMETER_KEY):
-        return None
-    if not any(isinstance(obj, Obj) and obj.site == origin.holder for obj in node):
-        return None  # another object's parameter: launch sets it for that node, not this one
-    return origin.key[len(_PARAMETER_KEY):]
+    parts = (origin,) if isinstance(origin, Input) else origin.parts if isinstance(origin, Joined) else ()
+    holders = {obj.site for obj in node if isinstance(obj, Obj)}
+    out: list[tuple[str, bool]] = []
+    for part in parts:
+        if isinstance(part, str):
+            out.append((part, False))
+        elif part.holder in holders and part.key.startswith(_PARAMETER_KEY):
+            out.append((part.key[len(_PARAMETER_KEY):], True))
+        else:
+            return None
+    return tuple(out) if any(is_parameter for _, is_parameter in out) else None
 
 
 def _class_name(program, obj: Obj) -> str | None:
@@ -441,7 +449,7 @@ def _entity_order(e: Entity) -> tuple:
     """Sort key that is also the identity of an entity on its node."""
     return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
             e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
-            e.invalid or "", e.via or "", e.partial, e.from_parameter or "")
+            e.invalid or "", e.via or "", e.partial, e.name_template or ())
 
 
 def build_graph_from(analysis: Analysis) -> RosGraph:

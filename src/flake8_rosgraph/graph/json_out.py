@@ -2,7 +2,7 @@
 
 Key order and list order are fixed, so the same graph always serialises to the
 same bytes.  Extra keys (``conditional``, ``invalid``, ``via``, ``partial``, ``from_parameter``,
-``language``, ``diagnostics``) are additions the contract allows; consumers ignore what they do
+``name_template``, ``language``, ``diagnostics``) are additions the contract allows; consumers ignore what they do
 not know.
 """
 from __future__ import annotations
@@ -43,6 +43,9 @@ def _entity(e: Entity) -> dict[str, Any]:
         out["partial"] = True
     if e.from_parameter is not None:
         out["from_parameter"] = e.from_parameter
+    elif e.name_template is not None:
+        out["name_template"] = [{"parameter": text} if is_parameter else text
+                                for text, is_parameter in e.name_template]
     return out
 
 

@@ -211,20 +211,23 @@ def _set_values(settings: list[tuple[str, Any, Location, str]]) -> dict[str, tup
 
 
 def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Location]]) -> list[Entity]:
-    """The entities as the launch's parameter values name them: an entity whose name is a
-    parameter the launch sets takes the value set (unknown when it is no single string)
-    instead of the default in code.  The alternatives of a partly known default collapse
-    into the one entity the value names."""
+    """The entities as the launch's parameter values name them: an entity whose name is built
+    from parameters the launch sets takes the values set (unknown when one is no single
+    string, or when the launch sets only some of them) instead of the defaults in code.
+    The alternatives of a partly known default collapse into the one entity the values name."""
     out: list[Entity] = []
     seen: set[tuple] = set()
     for entity in entities:
-        if entity.from_parameter is None or entity.from_parameter not in values:
+        used = entity.name_parameters
+        set_here = [p for p in used if p in values]
+        if not set_here:
             out.append(entity)
             continue
-        value, location = values[entity.from_parameter]
-        raw = value if isinstance(value, str) else None
+        texts = [values[text][0] if is_parameter else text
+                 for text, is_parameter in entity.name_template or ()] if len(set_here) == len(used) else []
+        raw = "".join(texts) if texts and all(isinstance(t, str) for t in texts) else None
         renamed = replace(entity, name=None, raw_name=raw, invalid=None, name_suffix=None,
-                          partial=False, name_set_at=location)
+                          partial=False, name_set_at=values[set_here[0]][1])
         key = (renamed.kind, renamed.location, renamed.type, raw)
         if key not in seen:
             seen.add(key)

@@ -40,13 +40,15 @@ def related(entity: Entity) -> tuple[Location, str]:
 def name_origin(entity: Entity) -> str | None:
     """Where a name a launch set through a parameter comes from, for a message (``parameter
     'topic' set at launch/robot.launch.py:12``); ``None`` for other names."""
-    if entity.from_parameter is None or entity.name_set_at is None:
+    if not entity.name_parameters or entity.name_set_at is None:
         return None
-    return f"parameter '{entity.from_parameter}' set at {entity.name_set_at.short()}"
+    which = ", ".join(f"'{p}'" for p in entity.name_parameters)
+    noun = "parameter" if len(entity.name_parameters) == 1 else "parameters"
+    return f"{noun} {which} set at {entity.name_set_at.short()}"
 
 
 def origin_related(entity: Entity) -> tuple[tuple[Location, str], ...]:
     """The setting that names ``entity``, as a related location (none for other names)."""
-    if entity.from_parameter is None or entity.name_set_at is None:
+    if not entity.name_parameters or entity.name_set_at is None:
         return ()
-    return ((entity.name_set_at, f"parameter '{entity.from_parameter}' = '{entity.name}'"),)
+    return ((entity.name_set_at, f"parameter '{entity.name_parameters[0]}' (name '{entity.name}')"),)
