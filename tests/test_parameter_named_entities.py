@@ -85,7 +85,7 @@ def test_a_name_that_is_a_parameter_value_is_marked_and_keeps_its_default(tmp_pa
     graph = build_graph(write(tmp_path, DRIVER))
     driver = next(n for n in graph.nodes if n.fqn == "/lidar_driver")
     assert [e.name_template for e in driver.entities if e.location.line == 17] == [
-        (("prefix", True), ("/diagnostics", False))]
+        (("prefix", "lidar"), ("", "/diagnostics"))]
     assert named(graph, "/lidar_driver") == {
         13: {("/scan", "scan_topic")},       # through a helper in another module and an attribute
         15: {("/status", "status_topic")},   # declare_parameter(...).value
@@ -319,5 +319,5 @@ def test_names_joined_from_parameters_follow_the_launch_values(tmp_path: Path):
     assert named(graph, "/bridge") == {15: {("/ego_racecar/odom", None)}, 17: {(None, None)}}
     assert launched(graph, "sim.launch.py")["/bridge"] == {
         15: {("/car1/odometry", None)}, 17: {("/car1/front_scan", None)}}
-    # Only the namespace set: the topic parameters keep no default of their own to rebuild from.
-    assert launched(graph, "half.launch.py")["/bridge"] == {15: {(None, None)}, 17: {(None, None)}}
+    # Only the namespace set: the odometry topic keeps its default, the scan topic has none.
+    assert launched(graph, "half.launch.py")["/bridge"] == {15: {("/car2/odom", None)}, 17: {(None, None)}}

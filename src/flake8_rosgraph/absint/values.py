@@ -216,11 +216,20 @@ class Input:
 
 
 @dataclass(frozen=True)
+class Slot:
+    """An outside input inside joined text, with the one string it defaults to (if known)."""
+
+    input: Input
+    default: str | None
+
+
+@dataclass(frozen=True)
 class Joined:
     """A string joined, in order, from constant text and outside inputs (``ns + '/scan'``
-    where ``ns`` is an :class:`Input`): a client that knows every input's value can rebuild it."""
+    where ``ns`` is an :class:`Input`): a client that knows the inputs' values (or takes
+    their defaults) can rebuild it."""
 
-    parts: tuple[Union[str, Input], ...]
+    parts: tuple[Union[str, Slot], ...]
 
 
 #: Where a value comes from outside the program: one input, or text joined from inputs.
@@ -374,7 +383,8 @@ BOOLS = Value(frozenset((Const("bool", True), Const("bool", False))))
 def _origin_text(origin: Origin) -> str:
     if isinstance(origin, Input):
         return f"{origin.holder}:{origin.key}"
-    return "+".join(repr(p) if isinstance(p, str) else _origin_text(p) for p in origin.parts)
+    return "+".join(repr(p) if isinstance(p, str) else f"{_origin_text(p.input)}={p.default!r}"
+                    for p in origin.parts)
 
 
 def _bounded(items: frozenset, soft: bool = False, origin: Origin | None = None) -> Value:
@@ -413,11 +423,12 @@ def from_input(value: Value, origin: Origin) -> Value:
     return Value(value.atoms, value.soft, value.hints, origin)
 
 
-def _text_parts(value: Value) -> tuple[Union[str, Input], ...] | None:
+def _text_parts(value: Value) -> tuple[Union[str, Slot], ...] | None:
     """``value`` as text parts: the inputs it comes from, or its one known string (``None``
     when it is neither, e.g. a default that is not labelled with what overrides it)."""
     if isinstance(value.origin, Input):
-        return (value.origin,)
+        strings = value.strings()
+        return (Slot(value.origin, strings[0] if strings and len(strings) == 1 else None),)
     if isinstance(value.origin, Joined):
         return value.origin.parts
     strings = value.strings()
@@ -432,7 +443,7 @@ def joined(result: Value, pieces: list[Value]) -> Value:
     surely a string concatenation): ``ns + '/scan'``, ``f'{ns}/scan'``."""
     if not any(p.origin is not None for p in pieces):
         return result
-    parts: list[Union[str, Input]] = []
+    parts: list[Union[str, Slot]] = []
     texts = 0
     for piece in pieces:
         found = _text_parts(piece)

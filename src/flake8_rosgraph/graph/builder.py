@@ -21,7 +21,7 @@ from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Input,
-                             Joined, Obj, Record, Seq, Coll, Value, wrapped)
+                             Joined, Obj, Record, Seq, Slot, Coll, Value, wrapped)
 from . import names
 from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
@@ -401,23 +401,27 @@ def resolve_name(raw: str | None, node: RosNode,
 _PARAMETER_KEY = "param:"
 
 
-def _name_template(name: Value, node: Value) -> tuple[tuple[str, bool], ...] | None:
+def _name_template(name: Value, node: Value) -> tuple[tuple[str, str | None], ...] | None:
     """The name as text and parameters of the creating node, if it is built from them (the
     stubs mark a parameter's value as the outside input ``param:NAME`` of its node object);
     ``None`` when it is not, or when a part is another object's input (launch sets that
-    node's parameters, not this one's)."""
+    node's parameters, not this one's).  See :attr:`Entity.name_template`."""
     origin = name.origin
-    parts = (origin,) if isinstance(origin, Input) else origin.parts if isinstance(origin, Joined) else ()
+    if isinstance(origin, Input):
+        strings = name.strings()
+        slots: tuple = (Slot(origin, strings[0] if strings and len(strings) == 1 else None),)
+    else:
+        slots = origin.parts if isinstance(origin, Joined) else ()
     holders = {obj.site for obj in node if isinstance(obj, Obj)}
-    out: list[tuple[str, bool]] = []
-    for part in parts:
+    out: list[tuple[str, str | None]] = []
+    for part in slots:
         if isinstance(part, str):
-            out.append((part, False))
-        elif part.holder in holders and part.key.startswith(_PARAMETER_KEY):
-            out.append((part.key[len(_PARAMETER_KEY):], True))
+            out.append(("", part))
+        elif part.input.holder in holders and part.input.key.startswith(_PARAMETER_KEY):
+            out.append((part.input.key[len(_PARAMETER_KEY):], part.default))
         else:
             return None
-    return tuple(out) if any(is_parameter for _, is_parameter in out) else None
+    return tuple(out) if any(parameter for parameter, _ in out) else None
 
 
 def _class_name(program, obj: Obj) -> str | None:

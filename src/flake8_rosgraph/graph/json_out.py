@@ -44,8 +44,8 @@ def _entity(e: Entity) -> dict[str, Any]:
     if e.from_parameter is not None:
         out["from_parameter"] = e.from_parameter
     elif e.name_template is not None:
-        out["name_template"] = [{"parameter": text} if is_parameter else text
-                                for text, is_parameter in e.name_template]
+        out["name_template"] = [{"parameter": parameter, "default": text} if parameter else text
+                                for parameter, text in e.name_template]
     return out
 
 

@@ -71,10 +71,11 @@ class Entity:
     partial: bool = False
     #: The name is built from parameters of its node (``declare_parameter('topic', 'scan')`` …
     #: ``create_subscription(T, self.get_parameter('topic').value, …)``, or ``ns + '/scan'``):
-    #: its parts in order, each ``(text, is_parameter)``. ``name`` is what the defaults give
-    #: (``None`` without them); a launch file or parameter file that sets the parameters
-    #: names the entity where it starts the node.
-    name_template: tuple[tuple[str, bool], ...] | None = None
+    #: its parts in order, each ``(parameter, default)`` — a parameter's name and the one
+    #: string it defaults to (``None``: no known default), or ``("", text)`` for plain text.
+    #: ``name`` is what the defaults give (``None`` without them); a launch file or parameter
+    #: file that sets the parameters names the entity where it starts the node.
+    name_template: tuple[tuple[str, str | None], ...] | None = None
     #: Where the launch file or parameter file that names the entity sets its (first)
     #: parameter (for a launched node only), so that a finding can point at the value.
     name_set_at: Location | None = None
@@ -82,14 +83,14 @@ class Entity:
     @property
     def from_parameter(self) -> str | None:
         """The one parameter the whole name is, or ``None``."""
-        if self.name_template is not None and len(self.name_template) == 1 and self.name_template[0][1]:
-            return self.name_template[0][0]
+        if self.name_template is not None and len(self.name_template) == 1:
+            return self.name_template[0][0] or None
         return None
 
     @property
     def name_parameters(self) -> tuple[str, ...]:
         """The parameters the name is built from, in order."""
-        return tuple(text for text, is_parameter in self.name_template or () if is_parameter)
+        return tuple(parameter for parameter, _ in self.name_template or () if parameter)
 
 
 @dataclass

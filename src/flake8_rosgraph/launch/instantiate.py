@@ -212,20 +212,20 @@ def _set_values(settings: list[tuple[str, Any, Location, str]]) -> dict[str, tup
 
 def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Location]]) -> list[Entity]:
     """The entities as the launch's parameter values name them: an entity whose name is built
-    from parameters the launch sets takes the values set (unknown when one is no single
-    string, or when the launch sets only some of them) instead of the defaults in code.
-    The alternatives of a partly known default collapse into the one entity the values name."""
+    from parameters the launch sets takes the values set, and the defaults in code of the
+    parts it does not set (unknown when a value is no single string, or a part it does not
+    set has no known default).  The alternatives of a partly known default collapse into
+    the one entity the values name."""
     out: list[Entity] = []
     seen: set[tuple] = set()
     for entity in entities:
-        used = entity.name_parameters
-        set_here = [p for p in used if p in values]
+        set_here = [p for p in entity.name_parameters if p in values]
         if not set_here:
             out.append(entity)
             continue
-        texts = [values[text][0] if is_parameter else text
-                 for text, is_parameter in entity.name_template or ()] if len(set_here) == len(used) else []
-        raw = "".join(texts) if texts and all(isinstance(t, str) for t in texts) else None
+        texts = [values[parameter][0] if parameter in values else text
+                 for parameter, text in entity.name_template or ()]
+        raw = "".join(texts) if all(isinstance(t, str) for t in texts) else None
         renamed = replace(entity, name=None, raw_name=raw, invalid=None, name_suffix=None,
                           partial=False, name_set_at=values[set_here[0]][1])
         key = (renamed.kind, renamed.location, renamed.type, raw)
