@@ -16,10 +16,12 @@ constants): no branch is decided and no value computed from a hint.
 
 A value may also carry an *origin*: it **is** one input the program receives from outside
 (an :class:`Input`: a setting an object holds under a key, supplied when the program runs —
-the atoms, if any, are only its default).  Passing the value on keeps the origin; joining
-it with the same input keeps it; anything computed from it, or joined with anything else,
-is a plain value again.  A client that knows the input's value for one run (a deployment
-file) can put it in place of the default.  The origin decides nothing in the analysis.
+the atoms, if any, are only its default), or a string joined from such inputs and known
+text (:class:`Joined`: ``ns + '/scan'``, ``f'/{ns}/scan'``).  Passing the value on keeps
+the origin; joining it with a value of the same origin keeps it; anything else computed
+from it, or joined with anything else, is a plain value again.  A client that knows the
+inputs' values for one run (a deployment file) can rebuild the value from them.  The
+origin decides nothing in the analysis.
 
 Atom sets and hint sets are bounded by :data:`MAX_ATOMS`; past the bound a value
 saturates, which makes every ascending chain finite — so joining is already a
@@ -206,7 +208,7 @@ class Record:
         return None
 
 
-@dataclass(frozen=True, order=True)
+@dataclass(frozen=True)
 class Input:
     """The setting ``key`` of the heap object allocated at ``holder``, supplied from outside
     the program (its stored value, if any, is only the default)."""
