@@ -23,6 +23,199 @@ def explained(root: Path) -> list[tuple[str, int, str]]:
     return [(e.site.path, e.site.line, e.status) for e in explain(analysis, graph).explanations]
 
 
+CMAKE = """
+    cmake_minimum_required(VERSION 3.8)
+    project({name})
+    find_package(ament_cmake REQUIRED)
+    install(PROGRAMS
+      scripts/{first}.py
+      scripts/{second}.py
+      scripts/calibration_base.py
+      DESTINATION lib/${{PROJECT_NAME}})
+    ament_package()
+"""
+
+# -- scripts importing the module beside them --------------------------------------------------
+CALIBRATION_BASE = """
+    from nav_msgs.msg import Odometry
+    from rclpy.node import Node
+    from std_msgs.msg import Float32
+
+
+    class CalibrationBase(Node):
+        '''Shared by every calibration script: odometry in, progress out.'''
+
+        def __init__(self, node_name):
+            super().__init__(node_name)
+            self.odom_sub = self.create_subscription(Odometry, '/localization/odom',
+                                                     self.on_odom, 10)
+            self.progress_pub = self.create_publisher(Float32, '~/progress', 1)
+
+        def on_odom(self, msg):
+            self.last_odom = msg
+"""
+
+CALIBRATION = {
+    "calibration/package.xml": PACKAGE_XML.format(name="calibration", build="ament_cmake"),
+    "calibration/CMakeLists.txt": CMAKE.format(name="calibration", first="steer_calibrator",
+                                               second="brake_calibrator"),
+    # An __init__.py in scripts/ (for a linter): the scripts still run as programs.
+    "calibration/scripts/__init__.py": "",
+    "calibration/scripts/calibration_base.py": CALIBRATION_BASE,
+    "calibration/scripts/steer_calibrator.py": """
+        #!/usr/bin/env python3
+        from calibration_base import CalibrationBase
+        import rclpy
+        from std_msgs.msg import Float64
+
+
+        class SteerCalibrator(CalibrationBase):
+            def __init__(self):
+                super().__init__('steer_calibrator')
+                self.cmd_pub = self.create_publisher(Float64, '/vehicle/steer_cmd', 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(SteerCalibrator())
+
+
+        if __name__ == '__main__':
+            main()
+    """,
+    "calibration/scripts/brake_calibrator.py": """
+        #!/usr/bin/env python3
+        import calibration_base
+        import rclpy
+        from std_msgs.msg import Float64
+
+
+        class BrakeCalibrator(calibration_base.CalibrationBase):
+            def __init__(self):
+                super().__init__('brake_calibrator')
+                self.cmd_pub = self.create_publisher(Float64, '/vehicle/brake_cmd', 10)
+
+
+        if __name__ == '__main__':
+            rclpy.init()
+            rclpy.spin(BrakeCalibrator())
+    """,
+}
+
+
+def test_a_script_imports_the_module_beside_it(tmp_path: Path) -> None:
+    """A script run as a program has its folder first on ``sys.path``: ``from
+    calibration_base import …`` and ``import calibration_base`` reach the file beside it, so
+    each node gets its own name and the base class's entities (autoware_tools'
+    control_data_collecting_tool: 28 sites on nodes of unknown name before)."""
+    root = write(tmp_path, CALIBRATION)
+    assert entities(root) == {
+        "/brake_calibrator": [("publishers", "/brake_calibrator/progress"),
+                              ("publishers", "/vehicle/brake_cmd"),
+                              ("subscriptions", "/localization/odom")],
+        "/steer_calibrator": [("publishers", "/steer_calibrator/progress"),
+                              ("publishers", "/vehicle/steer_cmd"),
+                              ("subscriptions", "/localization/odom")],
+    }
+    assert all(status == "complete" for _, _, status in explained(root))
+
+
+def test_a_folder_without_init_beside_the_scripts_is_a_namespace_package(tmp_path: Path) -> None:
+    """``from courses.load_course import …`` in a script reaches ``courses/load_course.py``
+    beside it, and that module's own ``from courses.markers import …`` reaches its neighbour
+    (the program's folder is on ``sys.path``), so the course's publisher is on the node
+    (autoware_tools: the course parameters of data_collecting_trajectory_publisher)."""
+    files = dict(CALIBRATION)
+    files["calibration/scripts/courses/load_course.py"] = """
+        from courses.markers import add_marker_publisher
+
+
+        def declare_course(node, course):
+            node.declare_parameter('course_name', course)
+            add_marker_publisher(node)
+    """
+    files["calibration/scripts/courses/markers.py"] = """
+        from visualization_msgs.msg import MarkerArray
+
+
+        def add_marker_publisher(node):
+            return node.create_publisher(MarkerArray, '~/course_markers', 1)
+    """
+    files["calibration/scripts/steer_calibrator.py"] = files[
+        "calibration/scripts/steer_calibrator.py"].replace(
+        "from calibration_base import CalibrationBase",
+        "from calibration_base import CalibrationBase\n"
+        "        from courses.load_course import declare_course").replace(
+        "self.cmd_pub = self.create_publisher(Float64, '/vehicle/steer_cmd', 10)",
+        "self.cmd_pub = self.create_publisher(Float64, '/vehicle/steer_cmd', 10)\n"
+        "                declare_course(self, 'eight')")
+    got = entities(write(tmp_path, files))
+    assert ("publishers", "/steer_calibrator/course_markers") in got["/steer_calibrator"]
+    assert ("publishers", "/brake_calibrator/course_markers") not in got["/brake_calibrator"]
+
+
+def test_same_named_scripts_of_two_packages_import_their_own_neighbour(tmp_path: Path) -> None:
+    """Two packages ship a ``calibration_base.py`` beside their scripts: each script gets the
+    one in its own folder, not whichever file the workspace walk met first."""
+    files = dict(CALIBRATION)
+    files.update({
+        "lateral/package.xml": PACKAGE_XML.format(name="lateral", build="ament_cmake"),
+        "lateral/CMakeLists.txt": CMAKE.format(name="lateral", first="yaw_calibrator",
+                                               second="yaw_calibrator"),
+        "lateral/scripts/calibration_base.py": CALIBRATION_BASE.replace(
+            "/localization/odom", "/lateral/odom"),
+        "lateral/scripts/yaw_calibrator.py": """
+            #!/usr/bin/env python3
+            from calibration_base import CalibrationBase
+            import rclpy
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(CalibrationBase('yaw_calibrator'))
+        """,
+    })
+    got = entities(write(tmp_path, files))
+    assert got["/yaw_calibrator"] == [("publishers", "/yaw_calibrator/progress"),
+                                      ("subscriptions", "/lateral/odom")]
+    assert ("subscriptions", "/localization/odom") in got["/steer_calibrator"]
+
+
+def test_a_package_module_keeps_the_workspace_module_of_that_name(tmp_path: Path) -> None:
+    """Inside an ament_python package, ``from topics import …`` means the workspace's top-level
+    ``topics`` module (the one Python finds on ``sys.path``), not a ``topics.py`` that happens
+    to sit beside the importing module: that file must not rename anything."""
+    files = {
+        "common/package.xml": PACKAGE_XML.format(name="common", build="ament_python"),
+        "common/setup.py": "from setuptools import setup\nsetup(name='common', py_modules=['topics'])\n",
+        "common/topics.py": "ODOM = 'odom'\n",
+        "rover/package.xml": PACKAGE_XML.format(name="rover", build="ament_python"),
+        "rover/rover/__init__.py": "",
+        "rover/rover/topics.py": "ODOM = 'wheel_odom_unused'\n",
+        "rover/rover/driver.py": """
+            import rclpy
+            from rclpy.node import Node
+            from nav_msgs.msg import Odometry
+            from topics import ODOM
+            import missing_helper
+
+
+            class Driver(Node):
+                def __init__(self):
+                    super().__init__('driver')
+                    self.create_publisher(Odometry, ODOM, 10)
+                    self.create_publisher(Odometry, missing_helper.TOPIC, 10)
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Driver())
+        """,
+    }
+    assert entities(write(tmp_path, files)) == {
+        "/driver": [("publishers", "/odom"), ("publishers", "?")]}
+
+
 # -- a dict only ever seen empty, filled through an alias ----------------------------------------
 SWARM_SERVER = """
     import rclpy
