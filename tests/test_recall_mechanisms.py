@@ -319,3 +319,155 @@ def test_a_table_written_where_it_is_made_still_decides_its_lookups(tmp_path: Pa
     })
     assert entities(root) == {"/relay": [("publishers", "/hauler/status"),
                                          ("publishers", "/scout/status")]}
+
+
+# -- launch: a description chosen among several; a parameter file shared by several nodes --------
+LIDAR_DRIVER = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import LaserScan
+
+
+    class LidarDriver(Node):
+        def __init__(self):
+            super().__init__('lidar_driver')
+            rate = self.declare_parameter('rate', 10.0).value
+            self.frame = self.declare_parameter('frame_id', 'laser').value
+            self.pub = self.create_publisher(LaserScan, 'scan', 10)
+            self.timer = self.create_timer(1.0 / rate, self.tick)
+
+        def tick(self):
+            self.pub.publish(LaserScan())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(LidarDriver())
+"""
+
+SCAN_MONITOR = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import LaserScan
+
+
+    class ScanMonitor(Node):
+        def __init__(self):
+            super().__init__('scan_monitor')
+            self.declare_parameter('timeout', 1.0)
+            self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+
+        def on_scan(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ScanMonitor())
+"""
+
+LIDAR_SETUP = """
+    from setuptools import setup
+
+    setup(
+        name='lidar_driver',
+        packages=['lidar_driver'],
+        entry_points={'console_scripts': [
+            'driver = lidar_driver.driver:main',
+            'monitor = lidar_driver.monitor:main',
+        ]},
+    )
+"""
+
+#: Which stack runs depends on the environment: one of two descriptions is returned.
+CHOSEN_LAUNCH = """
+    import os
+
+    from launch import LaunchDescription
+    from launch.substitutions import PathJoinSubstitution
+    from launch_ros.actions import Node
+    from launch_ros.substitutions import FindPackageShare
+
+
+    def generate_launch_description():
+        params = PathJoinSubstitution([FindPackageShare('robot_bringup'), 'config', 'common.yaml'])
+        if os.environ.get('LIDAR_MODE', 'single') == 'single':
+            return LaunchDescription([
+                Node(package='lidar_driver', executable='driver', name='lidar', parameters=[params]),
+                Node(package='lidar_driver', executable='monitor', parameters=[params]),
+            ])
+        return LaunchDescription([
+            Node(package='lidar_driver', executable='driver', name='lidar', parameters=[params]),
+            Node(package='lidar_driver', executable='monitor', parameters=[params]),
+            Node(package='lidar_driver', executable='monitor', name='rear_monitor',
+                 parameters=[params]),
+        ])
+"""
+
+#: One description: the second driver really runs beside the first under the same name.
+ONE_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.substitutions import PathJoinSubstitution
+    from launch_ros.actions import Node
+    from launch_ros.substitutions import FindPackageShare
+
+
+    def generate_launch_description():
+        params = PathJoinSubstitution([FindPackageShare('robot_bringup'), 'config', 'common.yaml'])
+        return LaunchDescription([
+            Node(package='lidar_driver', executable='driver', name='lidar', parameters=[params]),
+            Node(package='lidar_driver', executable='monitor', parameters=[params]),
+            Node(package='lidar_driver', executable='driver', name='lidar', parameters=[params]),
+        ])
+"""
+
+
+def lidar_workspace(root: Path, launch: str, config: str) -> Path:
+    return write(root, {
+        "src/lidar_driver/package.xml": PACKAGE_XML.format(name="lidar_driver",
+                                                           build="ament_python"),
+        "src/lidar_driver/setup.py": LIDAR_SETUP,
+        "src/lidar_driver/lidar_driver/__init__.py": "",
+        "src/lidar_driver/lidar_driver/driver.py": LIDAR_DRIVER,
+        "src/lidar_driver/lidar_driver/monitor.py": SCAN_MONITOR,
+        "src/robot_bringup/package.xml": PACKAGE_XML.format(name="robot_bringup",
+                                                            build="ament_python"),
+        "src/robot_bringup/setup.py": "from setuptools import setup\nsetup(name='robot_bringup')\n",
+        "src/robot_bringup/config/common.yaml": config,
+        "src/robot_bringup/launch/lidar.launch.py": launch,
+    })
+
+
+COMMON_YAML = """
+    /**:
+      ros__parameters:
+        rate: 20.0
+        frame_id: front_laser
+        timeout: 0.5
+"""
+
+
+def findings(root: Path, codes: list[str]) -> list[tuple[str, str, int, str]]:
+    from flake8_rosgraph.launch.api import judged_graph
+    from flake8_rosgraph.rules import RuleConfig, run_rules
+
+    graph = build_graph(root)
+    return sorted((f.code, f.location.path, f.location.line, f.message)
+                  for f in run_rules(judged_graph(graph, graph.systems), RuleConfig(), codes))
+
+
+def test_descriptions_returned_on_different_paths_never_run_together(tmp_path: Path) -> None:
+    """``if …: return LaunchDescription([...])`` then another ``return``: one call returns one
+    of them, so the driver named ``lidar`` in both is not a duplicate (autoware_tools'
+    control_data_collecting_tool: 8 false ROS007, one per node of the two alternatives)."""
+    root = lidar_workspace(tmp_path, CHOSEN_LAUNCH, COMMON_YAML)
+    assert findings(root, ["ROS007"]) == []
+    (system,) = build_graph(root).systems
+    assert len(system.nodes) == 5 and all(n.conditional for n in system.nodes)
+
+
+def test_one_description_still_starts_its_nodes_together(tmp_path: Path) -> None:
+    """The twin: two drivers named ``lidar`` in one returned description both start."""
+    root = lidar_workspace(tmp_path, ONE_LAUNCH, COMMON_YAML)
+    reported = findings(root, ["ROS007"])
+    assert [(code, line) for code, _, line, _ in reported] == [("ROS007", 10), ("ROS007", 12)]
