@@ -471,3 +471,22 @@ def test_one_description_still_starts_its_nodes_together(tmp_path: Path) -> None
     root = lidar_workspace(tmp_path, ONE_LAUNCH, COMMON_YAML)
     reported = findings(root, ["ROS007"])
     assert [(code, line) for code, _, line, _ in reported] == [("ROS007", 10), ("ROS007", 12)]
+
+
+def test_a_parameter_file_shared_by_several_nodes_is_judged_against_all_of_them(
+        tmp_path: Path) -> None:
+    """A ``/**`` file given to the driver and the monitor: each reads its own part
+    (``rate`` and ``frame_id`` the driver, ``timeout`` the monitor), so nothing is ignored
+    (autoware_tools: 68 ROS204 on such a common file before); a name neither declares is
+    reported once, naming both nodes."""
+    launch = ONE_LAUNCH.replace(
+        "            Node(package='lidar_driver', executable='driver', name='lidar', "
+        "parameters=[params]),\n        ])", "        ])")
+    assert launch.count("executable='driver'") == 1
+    root = lidar_workspace(tmp_path, launch, COMMON_YAML + "        rte: 5.0\n")
+    reported = findings(root, ["ROS204"])
+    assert len(reported) == 1
+    code, path, line, message = reported[0]
+    assert (code, path, line) == ("ROS204", "src/robot_bringup/config/common.yaml", 6)
+    assert message.startswith("parameter 'rte' is set for nodes '/lidar', '/scan_monitor', "
+                              "none of which declares it")

@@ -30,9 +30,12 @@ class UnknownParameter(Rule):
     allows undeclared parameters (`allow_undeclared_parameters=True`) or
     declares one whose name the analysis cannot determine is skipped.
     `SetParameter` values (meant for every node of a scope) are not judged.
-    rcl hands a process's parameters to every node it creates, so a value
-    is reported only when no node of that process that receives it declares
-    it (a multi-node executable is judged as one process).
+    rcl hands a process's parameters to every node it creates, and one
+    parameter file section (`/**`) may reach the nodes of several launched
+    processes, so a value is reported only when no node that receives it
+    declares it (a multi-node executable is judged as one process; a common
+    parameter file shared by several nodes, each reading its own part, is
+    quiet).
 
     ## Example
     ```yaml
@@ -60,31 +63,34 @@ class UnknownParameter(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         for system in graph.systems:
-            processes: dict[int, list[Instance]] = {}
-            for instance in system.instances:
-                processes.setdefault(id(instance.launched), []).append(instance)
-            for process in processes.values():
-                yield from self._process(process)
+            yield from self._system(system.instances)
 
-    def _process(self, process: list[Instance]) -> Iterator[Finding]:
-        """One launched executable: rcl hands its parameters to every node it creates, and
-        a value is ignored only when no node that receives it declares it."""
+    def _system(self, instances: list[Instance]) -> Iterator[Finding]:
+        """One launch system. rcl hands a process's parameters to every node it creates, and
+        one parameter file section (``/**``) may reach the nodes of several processes: a value
+        is ignored only when no node it reaches declares it, and is not judged when one of
+        them declares names the analysis cannot read."""
+        processes: dict[int, list[Instance]] = {}
+        for instance in instances:
+            processes.setdefault(id(instance.launched), []).append(instance)
         declared: dict[int, set[str]] = {}
-        for instance in process:
-            names_ = [e.name for e in instance.code.entities if e.kind == "parameters"]
-            if instance.code.location in instance.launched.target.open_parameter_sites \
-                    or any(name is None for name in names_):
-                return
-            declared[id(instance)] = set(names_)
+        open_: set[int] = set()
+        for process in processes.values():
+            for instance in process:
+                names_ = [e.name for e in instance.code.entities if e.kind == "parameters"]
+                if instance.code.location in instance.launched.target.open_parameter_sites \
+                        or any(name is None for name in names_):
+                    open_.update(id(i) for i in process)
+                declared[id(instance)] = {name for name in names_ if name is not None}
         receivers: dict[tuple[str, Location], list[Instance]] = {}
-        for instance in process:
+        for instance in instances:
             for name, _value, location, origin in instance.settings:
                 if origin == "scope" or name in BUILTIN_PARAMETERS \
                         or name.startswith(BUILTIN_PREFIXES):
                     continue
                 receivers.setdefault((name, location), []).append(instance)
         for (name, location), nodes in sorted(receivers.items(), key=lambda kv: (kv[0][1], kv[0][0])):
-            if any(name in declared[id(i)] for i in nodes):
+            if any(id(i) in open_ or name in declared[id(i)] for i in nodes):
                 continue
             yield self._finding(name, location, nodes, set().union(*(declared[id(i)] for i in nodes)))
 
