@@ -490,3 +490,57 @@ def test_a_parameter_file_shared_by_several_nodes_is_judged_against_all_of_them(
     assert (code, path, line) == ("ROS204", "src/robot_bringup/config/common.yaml", 6)
     assert message.startswith("parameter 'rte' is set for nodes '/lidar', '/scan_monitor', "
                               "none of which declares it")
+
+
+# -- webots_ros2_driver Python plugins named in the robot description ---------------------------
+WEBOTS_PLUGIN = """
+    import rclpy
+    from ackermann_msgs.msg import AckermannDrive
+    from sensor_msgs.msg import Range
+
+
+    class {cls}:
+        def init(self, webots_node, properties):
+            self.__robot = webots_node.robot
+            rclpy.init(args=None)
+            self.__node = rclpy.create_node('{node}')
+            self.__node.create_subscription(AckermannDrive, 'cmd_ackermann', self.__on_cmd, 1)
+            self.__range = self.__node.create_publisher(Range, 'front_range', 1)
+
+        def __on_cmd(self, message):
+            self.__robot.setCruisingSpeed(message.speed)
+
+        def step(self):
+            rclpy.spin_once(self.__node, timeout_sec=0)
+"""
+
+
+def test_a_webots_plugin_named_in_the_robot_description_is_an_entry_point(tmp_path: Path) -> None:
+    """webots_ros2_driver builds the class a ``<webots><plugin type="pkg.module.Class">`` names
+    and calls its ``init``: the node it creates there is in the graph (webots_ros2: the Tesla,
+    Mavic, Crazyflie and example plugins, 13 sites never analysed before). A C++ plugin, a
+    ``<plugin>`` outside ``<webots>`` and a class no description names stay out."""
+    root = write(tmp_path, {
+        "car/package.xml": PACKAGE_XML.format(name="car", build="ament_python"),
+        "car/setup.py": "from setuptools import setup\nsetup(name='car', packages=['car'])\n",
+        "car/car/__init__.py": "",
+        "car/car/car_driver.py": WEBOTS_PLUGIN.format(cls="CarDriver", node="car_driver"),
+        "car/car/spare_driver.py": WEBOTS_PLUGIN.format(cls="SpareDriver", node="spare_driver"),
+        "car/car/sim_driver.py": WEBOTS_PLUGIN.format(cls="SimDriver", node="sim_driver"),
+        "car/resource/car_webots.urdf": """
+            <?xml version="1.0" ?>
+            <robot name="Car">
+                <webots>
+                    <plugin type="car.car_driver.CarDriver" />
+                    <plugin type="webots_ros2_control::Ros2Control" />
+                </webots>
+                <gazebo>
+                    <plugin type="car.sim_driver.SimDriver" />
+                </gazebo>
+            </robot>
+        """,
+    })
+    assert entities(root, ("publishers", "subscriptions")) == {
+        "/car_driver": [("publishers", "/front_range"), ("subscriptions", "/cmd_ackermann")]}
+    missing = {path.rsplit("/", 1)[-1] for path, _, status in explained(root) if status == "missing"}
+    assert missing == {"spare_driver.py", "sim_driver.py"}

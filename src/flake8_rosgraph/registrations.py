@@ -11,7 +11,11 @@ entry points of the analysis like ``console_scripts`` are:
   ``name = package.module:Class``;
 * every ``<class type="package.module.Class">`` of the plugin description files a
   ``package.xml`` exports (``<rqt_gui plugin="${prefix}/plugin.xml"/>``); C++ classes
-  (``ns::Class``) are not Python and are left out.
+  (``ns::Class``) are not Python and are left out;
+* every ``<plugin type="package.module.Class">`` inside ``<webots>`` of the package's robot
+  descriptions (``*.urdf``, ``*.xacro``): webots_ros2_driver imports and builds the class and
+  calls its ``init(webots_node, properties)`` and ``step()`` (C++ plugins, ``ns::Class``, are
+  left out).
 
 The result is a set of dotted ``module.Class`` names; a name that is no class of the
 workspace (a function, a missing module) is simply never matched.
@@ -20,6 +24,7 @@ from __future__ import annotations
 
 import ast
 import configparser
+import os
 import re
 import sys
 import xml.parsers.expat
@@ -28,13 +33,15 @@ from pathlib import Path
 from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
 from .launch.xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
-from .safe_io import describe, is_regular_file, read_bytes, read_text
+from .safe_io import SKIP_DIRS, describe, is_regular_file, read_bytes, read_text
 
 #: Entry point groups that name executables, not classes a framework instantiates.
 SCRIPT_GROUPS = frozenset({"console_scripts", "gui_scripts"})
 #: ``plugin="${prefix}/plugin.xml"`` in a package.xml export.
 _EXPORTED_PLUGIN = re.compile(r"""\bplugin\s*=\s*["']\$\{prefix\}/([^"'$]+)["']""")
 _DOTTED = re.compile(r"^[A-Za-z_][\w.]*$")
+#: Robot description files that may declare webots_ros2_driver plugins.
+_DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
 
 
 def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
@@ -48,11 +55,13 @@ def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
         try:
             found.update(_entry_point_targets(folder, root))
             found.update(_plugin_classes(manifest, folder, root))
+            found.update(_robot_description_plugins(folder, root))
         except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError, XmlRefused,
                 xml.parsers.expat.ExpatError) as exc:
             where = manifest.relative_to(root).as_posix() if manifest.is_relative_to(root) else manifest.name
             diagnostics.append(Diagnostic(where, 1, "classes this package registers with a framework "
-                                                    f"(entry points, plugin.xml) are not known: {describe(exc)}"))
+                                                    f"(entry points, plugin.xml, robot descriptions) are not known: "
+                                                    f"{describe(exc)}"))
     return frozenset(found), diagnostics
 
 
@@ -129,6 +138,41 @@ def _class_types(text: str) -> list[str]:
 
     def end(tag: str) -> None:
         depth[0] -= 1
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.Parse(text, True)
+    return types
+
+
+def _robot_description_plugins(folder: Path, root: Path) -> list[str]:
+    """``type`` of every Python ``<plugin>`` inside ``<webots>`` in the package's ``*.urdf`` and
+    ``*.xacro`` files (hidden and build folders skipped)."""
+    classes: list[str] = []
+    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        for name in sorted(filenames):
+            if name.endswith(_DESCRIPTION_SUFFIXES):
+                classes.extend(_webots_plugin_types(read_text(Path(dirpath) / name, root)))
+    return classes
+
+
+def _webots_plugin_types(text: str) -> list[str]:
+    types: list[str] = []
+    parser = safe_parser()
+    stack: list[str] = []
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        if len(stack) >= MAX_XML_DEPTH:
+            raise XmlRefused(f"elements nested deeper than {MAX_XML_DEPTH}")
+        written = attrs.get("type", "")
+        if tag == "plugin" and "webots" in stack and "::" not in written and "." in written \
+                and _DOTTED.match(written):
+            types.append(written)
+        stack.append(tag)
+
+    def end(tag: str) -> None:
+        stack.pop()
 
     parser.StartElementHandler = start
     parser.EndElementHandler = end
