@@ -544,3 +544,61 @@ def test_a_webots_plugin_named_in_the_robot_description_is_an_entry_point(tmp_pa
         "/car_driver": [("publishers", "/front_range"), ("subscriptions", "/cmd_ackermann")]}
     missing = {path.rsplit("/", 1)[-1] for path, _, status in explained(root) if status == "missing"}
     assert missing == {"spare_driver.py", "sim_driver.py"}
+
+
+# -- the Python half of a hybrid node, built from C++ through pybind11 ---------------------------
+def test_a_class_a_cpp_node_builds_through_pybind11_is_an_entry_point(tmp_path: Path) -> None:
+    """``py::module::import("guard.guard_module")`` then ``.attr("GuardManager")(...)``: the C++
+    node builds the Python class, whose node and entities are in the graph (bitbots_main's
+    HCM: 15 sites never analysed before). A class the C++ only reads without calling it adds
+    nothing."""
+    root = write(tmp_path, {
+        "guard/package.xml": PACKAGE_XML.format(name="guard", build="ament_cmake"),
+        "guard/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(guard)\n",
+        "guard/guard/__init__.py": "",
+        "guard/guard/guard_module.py": """
+            import rclpy
+            from rclpy.node import Node
+            from std_msgs.msg import Bool, Float32
+
+
+            class GuardManager:
+                def __init__(self, use_sim_time):
+                    rclpy.init(args=None)
+                    self.node = Node('guard_py')
+                    self.node.create_subscription(Float32, 'battery_voltage', self.on_voltage, 1)
+
+                def on_voltage(self, msg):
+                    self.low = msg.data < 11.0
+
+                def tick(self):
+                    return self.low
+
+
+            class SpareManager:
+                def __init__(self):
+                    self.node = Node('spare_py')
+                    self.node.create_publisher(Bool, 'spare', 1)
+        """,
+        "guard/src/guard.cpp": """
+            #include <pybind11/embed.h>
+            #include <rclcpp/rclcpp.hpp>
+            namespace py = pybind11;
+
+            class GuardCpp : public rclcpp::Node {
+             public:
+              GuardCpp() : Node("guard_cpp") {
+                auto module = py::module::import("guard.guard_module");
+                guard_py_ = module.attr("GuardManager")(false);
+                spare_class_ = module.attr("SpareManager");
+              }
+              void tick() { guard_py_.attr("tick")(); }
+             private:
+              py::object guard_py_;
+              py::object spare_class_;
+            };
+        """,
+    })
+    got = entities(root, ("publishers", "subscriptions"))
+    assert got.get("/guard_py") == [("subscriptions", "/battery_voltage")]
+    assert "/spare_py" not in got
