@@ -602,3 +602,19 @@ def test_a_class_a_cpp_node_builds_through_pybind11_is_an_entry_point(tmp_path: 
     got = entities(root, ("publishers", "subscriptions"))
     assert got.get("/guard_py") == [("subscriptions", "/battery_voltage")]
     assert "/spare_py" not in got
+
+
+def test_a_broken_robot_description_loses_only_its_own_plugins(tmp_path: Path) -> None:
+    """A malformed ``*.xacro`` next to the description that names the plugin: the plugin is
+    still an entry point, and nothing crashes."""
+    root = write(tmp_path, {
+        "car/package.xml": PACKAGE_XML.format(name="car", build="ament_python"),
+        "car/setup.py": "from setuptools import setup\nsetup(name='car', packages=['car'])\n",
+        "car/car/__init__.py": "",
+        "car/car/car_driver.py": WEBOTS_PLUGIN.format(cls="CarDriver", node="car_driver"),
+        "car/resource/broken.urdf.xacro": "<robot><webots><plugin type='car.x.Y'></robot>",
+        "car/resource/car_webots.urdf": """
+            <robot name="Car"><webots><plugin type="car.car_driver.CarDriver" /></webots></robot>
+        """,
+    })
+    assert list(entities(root, ("publishers",))) == ["/car_driver"]

@@ -162,10 +162,15 @@ def _robot_description_plugins(folder: Path, root: Path) -> list[str]:
     for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         for name in sorted(filenames):
-            if name.endswith(_DESCRIPTION_SUFFIXES):
+            if not name.endswith(_DESCRIPTION_SUFFIXES):
+                continue
+            try:
                 text = read_text(Path(dirpath) / name, root, MAX_SOURCE_BYTES)
                 if "webots" in text:
                     classes.extend(_webots_plugin_types(text))
+            except (OSError, UnicodeDecodeError, ValueError, RecursionError, XmlRefused,
+                    xml.parsers.expat.ExpatError):
+                continue  # a description that cannot be read names no plugin; the rest still count
     return classes
 
 
