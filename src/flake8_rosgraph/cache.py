@@ -79,7 +79,7 @@ _OWNER_TEXT = "Signature: 8a477f597d28d172789f06886806bc55\n# flake8-rosgraph an
 _MARKERS = {".gitignore": "# created by flake8-rosgraph\n*\n", "COLCON_IGNORE": "", OWNER_MARKER: _OWNER_TEXT}
 #: Besides ``*.py``: what the analysis may read (manifests, launch and parameter files, C++ partner ends).
 _INPUT_SUFFIXES = frozenset({".py", ".xml", ".yaml", ".yml", ".toml", ".cfg", ".launch",
-                             ".msg", ".srv", ".action"}) | CPP_SUFFIXES
+                             ".msg", ".srv", ".action", ".urdf", ".xacro"}) | CPP_SUFFIXES
 #: Files read (or whose presence matters) whatever their suffix.
 _INPUT_NAMES = frozenset({"CMakeLists.txt", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 

@@ -508,10 +508,10 @@ def _import_bindings(program: Program, module: Module) -> dict[str, str]:
         if isinstance(node, ast.Import):
             for alias in node.names:
                 if alias.asname:
-                    out[alias.asname] = alias.name
+                    out[alias.asname] = program.absolute_import(module, alias.name)
                 else:
                     top = alias.name.split(".")[0]
-                    out[top] = top
+                    out[top] = program.absolute_import(module, top)
         elif isinstance(node, ast.ImportFrom):
             base = program.resolve_import(module, node.module, node.level)
             for alias in node.names:

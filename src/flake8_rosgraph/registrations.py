@@ -11,7 +11,14 @@ entry points of the analysis like ``console_scripts`` are:
   ``name = package.module:Class``;
 * every ``<class type="package.module.Class">`` of the plugin description files a
   ``package.xml`` exports (``<rqt_gui plugin="${prefix}/plugin.xml"/>``); C++ classes
-  (``ns::Class``) are not Python and are left out.
+  (``ns::Class``) are not Python and are left out;
+* every ``<plugin type="package.module.Class">`` inside ``<webots>`` of the package's robot
+  descriptions (``*.urdf``, ``*.xacro``): webots_ros2_driver imports and builds the class and
+  calls its ``init(webots_node, properties)`` and ``step()`` (C++ plugins, ``ns::Class``, are
+  left out);
+* every class a C++ file of the package builds through pybind11's embedded interpreter
+  (``auto m = py::module::import("pkg.module"); m.attr("Class")(...)``): a hybrid node whose
+  Python half no Python code constructs.
 
 The result is a set of dotted ``module.Class`` names; a name that is no class of the
 workspace (a function, a missing module) is simply never matched.
@@ -20,6 +27,7 @@ from __future__ import annotations
 
 import ast
 import configparser
+import os
 import re
 import sys
 import xml.parsers.expat
@@ -28,13 +36,20 @@ from pathlib import Path
 from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
 from .launch.xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
-from .safe_io import describe, is_regular_file, read_bytes, read_text
+from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, describe, is_regular_file, read_bytes, read_text
 
 #: Entry point groups that name executables, not classes a framework instantiates.
 SCRIPT_GROUPS = frozenset({"console_scripts", "gui_scripts"})
 #: ``plugin="${prefix}/plugin.xml"`` in a package.xml export.
 _EXPORTED_PLUGIN = re.compile(r"""\bplugin\s*=\s*["']\$\{prefix\}/([^"'$]+)["']""")
 _DOTTED = re.compile(r"^[A-Za-z_][\w.]*$")
+#: Robot description files that may declare webots_ros2_driver plugins.
+_DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
+_IMPORT = r'(?:pybind11|py)::module_?::import\(\s*"([A-Za-z_][\w.]*)"\s*\)'
+#: ``auto m = py::module::import("pkg.module");``
+_PY_MODULE_VAR = re.compile(r"\b(\w+)\s*=\s*" + _IMPORT)
+#: ``m.attr("Class")(`` and ``py::module::import("pkg.module").attr("Class")(``: a call.
+_PY_ATTR_CALL = re.compile(r'(?:\b(\w+)|' + _IMPORT + r')\s*\.\s*attr\(\s*"([A-Za-z_]\w*)"\s*\)\s*\(')
 
 
 def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
@@ -48,11 +63,15 @@ def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
         try:
             found.update(_entry_point_targets(folder, root))
             found.update(_plugin_classes(manifest, folder, root))
+            found.update(_robot_description_plugins(folder, root))
+            found.update(_embedded_python_classes(folder, root))
         except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError, XmlRefused,
                 xml.parsers.expat.ExpatError) as exc:
             where = manifest.relative_to(root).as_posix() if manifest.is_relative_to(root) else manifest.name
             diagnostics.append(Diagnostic(where, 1, "classes this package registers with a framework "
-                                                    f"(entry points, plugin.xml) are not known: {describe(exc)}"))
+                                                    f"(entry points, plugin.xml, robot descriptions, pybind11) are "
+                                                    f"not known: "
+                                                    f"{describe(exc)}"))
     return frozenset(found), diagnostics
 
 
@@ -134,3 +153,70 @@ def _class_types(text: str) -> list[str]:
     parser.EndElementHandler = end
     parser.Parse(text, True)
     return types
+
+
+def _robot_description_plugins(folder: Path, root: Path) -> list[str]:
+    """``type`` of every Python ``<plugin>`` inside ``<webots>`` in the package's ``*.urdf`` and
+    ``*.xacro`` files (hidden and build folders skipped)."""
+    classes: list[str] = []
+    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        for name in sorted(filenames):
+            if not name.endswith(_DESCRIPTION_SUFFIXES):
+                continue
+            try:
+                text = read_text(Path(dirpath) / name, root, MAX_SOURCE_BYTES)
+                if "webots" in text:
+                    classes.extend(_webots_plugin_types(text))
+            except (OSError, UnicodeDecodeError, ValueError, RecursionError, XmlRefused,
+                    xml.parsers.expat.ExpatError):
+                continue  # a description that cannot be read names no plugin; the rest still count
+    return classes
+
+
+def _webots_plugin_types(text: str) -> list[str]:
+    types: list[str] = []
+    parser = safe_parser()
+    stack: list[str] = []
+
+    def start(tag: str, attrs: dict[str, str]) -> None:
+        if len(stack) >= MAX_XML_DEPTH:
+            raise XmlRefused(f"elements nested deeper than {MAX_XML_DEPTH}")
+        written = attrs.get("type", "")
+        if tag == "plugin" and "webots" in stack and "::" not in written and "." in written \
+                and _DOTTED.match(written):
+            types.append(written)
+        stack.append(tag)
+
+    def end(tag: str) -> None:
+        stack.pop()
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.Parse(text, True)
+    return types
+
+
+def _embedded_python_classes(folder: Path, root: Path) -> list[str]:
+    """``module.Class`` of every ``attr("Class")(…)`` call on a module that a C++ file of the
+    package imports through pybind11 (``py::module::import``, ``py::module_::import``)."""
+    from .cpp import CPP_SUFFIXES
+
+    classes: list[str] = []
+    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
+        for name in sorted(filenames):
+            if os.path.splitext(name)[1] not in CPP_SUFFIXES:
+                continue
+            try:
+                text = read_bytes(Path(dirpath) / name, root, MAX_SOURCE_BYTES).decode("utf-8", "replace")
+            except OSError:
+                continue  # the C++ front end reports what it cannot read
+            if "import(" not in text or ".attr(" not in text:
+                continue
+            modules = {var: module for var, module in _PY_MODULE_VAR.findall(text)}
+            for var, module, attr in _PY_ATTR_CALL.findall(text):
+                module = module or modules.get(var, "")
+                if module:
+                    classes.append(f"{module}.{attr}")
+    return classes

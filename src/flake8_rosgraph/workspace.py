@@ -233,7 +233,9 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module |
     name, is_package = module_name(path, root if root.is_dir() else root.parent)
     wide = {} if text.isascii() else {  # numbered as Python's tokenizer numbers lines
         number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
-    return Module(name, rel, tree, wide, is_package)
+    first = text.split("\n", 1)[0]
+    program = first.startswith("#!") and "python" in first
+    return Module(name, rel, tree, wide, is_package, program)
 
 
 def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:

@@ -186,8 +186,8 @@ class ExpressionSemantics:
     def e_Subscript(self, node: ast.Subscript) -> Value:
         container = self.eval(node.value)
         index = self.eval(node.slice)
-        if container.is_top:
-            return TOP
+        if container.is_top or all(may_be_filled_elsewhere(a) for a in container):
+            return TOP  # only ever seen empty here: what fills it is not seen (as iter_elem)
         out = BOTTOM
         for atom in container:
             out = out.join(self._subscript(atom, index))

@@ -240,10 +240,12 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     def s_Import(self, op: ast.Import) -> None:
         for alias in op.names:
             if alias.asname:
-                self.store_name(alias.asname, self.module_value(alias.name))
+                self.store_name(alias.asname, self.module_value(
+                    self.program.absolute_import(self.frame.module, alias.name)))
             else:
                 top = alias.name.split(".")[0]
-                self.store_name(top, self.module_value(top))
+                self.store_name(top, self.module_value(
+                    self.program.absolute_import(self.frame.module, top)))
 
     def s_ImportFrom(self, op: ast.ImportFrom) -> None:
         base = self.program.resolve_import(self.frame.module, op.module, op.level)

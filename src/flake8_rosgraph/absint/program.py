@@ -23,6 +23,8 @@ class Module:
     #: differ from character columns (all lines would cost memory for nothing).
     wide_lines: dict[int, str]
     is_package: bool = False
+    #: Run as a program (a ``#!`` line naming Python): its folder is first on ``sys.path``.
+    program: bool = False
     cfg: CFG | None = None
     globals: frozenset[str] = frozenset()
 
@@ -132,6 +134,23 @@ class Program:
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
+        #: (folder, name) -> the module importable as ``name`` from a file in ``folder`` when
+        #: that folder is on ``sys.path`` (``name.py`` or ``name/__init__.py`` in it).
+        self._in_folder: dict[tuple[str, str], str] = {}
+        #: First components of the workspace's module names.
+        self._tops: set[str] = set()
+        for mod in self.modules.values():
+            folder, _, file = mod.path.rpartition("/")
+            if mod.is_package:
+                folder, _, file = folder.rpartition("/")
+            elif file.endswith(".py"):
+                file = file[:-3]
+            else:
+                file = ""  # an executable without the suffix: nothing can import it
+            if file.isidentifier():
+                self._in_folder.setdefault((folder, file), mod.name)
+            if not mod.name.startswith("<"):
+                self._tops.add(mod.name.partition(".")[0])
         for mod in self.modules.values():
             self.imports[mod.name] = _statement_imports(self, mod)
 
@@ -281,7 +300,7 @@ class Program:
     def resolve_import(self, mod: Module, name: str | None, level: int) -> str:
         """The absolute dotted name of ``from <level dots><name> import …`` inside ``mod``."""
         if level == 0:
-            return name or ""
+            return self.absolute_import(mod, name) if name else ""
         parts = mod.name.split(".")
         if not mod.is_package:
             parts = parts[:-1]
@@ -291,6 +310,35 @@ class Program:
         if name:
             return f"{base}.{name}" if base else name
         return base
+
+    def absolute_import(self, mod: Module, name: str) -> str:
+        """The module name ``import <name>`` reaches from ``mod``.
+
+        A file run as a program has its own folder first on ``sys.path``: ``import helper``
+        there reaches ``helper.py`` beside it (scripts installed together, a node importing
+        its base class from the next file). Taken only when the workspace has no module of
+        that name, when the importing file is a program (its ``#!`` line), or when the one
+        beside it is a second module of that name (two packages' scripts with the same file
+        name): otherwise (a package module beside a stray file) the name keeps its meaning."""
+        top, dot, rest = name.partition(".")
+        folder = mod.path.rpartition("/")[0]
+        beside = self._in_folder.get((folder, top))
+        if beside is None and rest and (top not in self._tops or mod.program):
+            # ``courses.load_course``: a folder without ``__init__.py`` is a namespace package
+            # where it sits, beside the program or beside a folder above the importing module
+            # (``courses/load_course.py`` importing ``courses.along_road``: the program that
+            # imported it has ``courses/`` beside it).
+            *inner, last = name.split(".")
+            while True:
+                found = self._in_folder.get(("/".join(p for p in (folder, *inner) if p), last))
+                if found is not None or not folder:
+                    return found if found is not None else name
+                folder = folder.rpartition("/")[0]
+        if beside is None or beside == top:
+            return name
+        if top in self._tops and not beside.startswith("<") and not mod.program:
+            return name
+        return beside + dot + rest
 
     def closure_owner(self, fid: int, name: str) -> int | None:
         """The enclosing function whose local ``name`` the function ``fid`` refers to."""
@@ -325,7 +373,7 @@ def _statement_imports(program: Program, mod: Module) -> frozenset[str]:
     while stack:
         stmt = stack.pop()
         if isinstance(stmt, ast.Import):
-            out.update(a.name for a in stmt.names)
+            out.update(program.absolute_import(mod, a.name) for a in stmt.names)
         elif isinstance(stmt, ast.ImportFrom):
             base = program.resolve_import(mod, stmt.module, stmt.level)
             out.add(base)

@@ -70,6 +70,24 @@ def _order(atom: Any) -> tuple:
     return (atom.site if isinstance(atom, Obj) else "", repr(atom))
 
 
+def _alternative(chosen: Obj, descriptions: list[Obj], actions: list[Action],
+                 at: Location) -> list[Action]:
+    """``actions`` of one of several descriptions the function may return (``if mode == 'a':
+    return LaunchDescription([...])`` ``else: return LaunchDescription([...])``): one call returns
+    one of them, so their nodes are conditional and never start together. Each alternative runs
+    under "this one was returned" and "no other one was", which the guards of any two
+    alternatives contradict."""
+    for other in reversed(descriptions):
+        if other is not chosen:
+            actions = [GroupAction(at, actions, False, Condition(_returned(other), negate=True))]
+    return [GroupAction(at, actions, False, Condition(_returned(chosen)))]
+
+
+def _returned(description: Obj) -> Text:
+    """The (never evaluated) condition that ``description`` is the one returned."""
+    return Text(f"{ENTRY_FUNCTION}() returns the description made at {description.site}")
+
+
 class PythonFront:
     def __init__(self, analysis: Analysis, path: str) -> None:
         self.analysis = analysis
@@ -95,9 +113,12 @@ class PythonFront:
         if summary.is_top or not descriptions:
             return [], f"{ENTRY_FUNCTION}() does not return a LaunchDescription the analysis can follow"
         out: list[Action] = []
-        for ld in sorted(descriptions, key=_order):
-            out.extend(self.entity_list(self.field(ld, "initial_entities"), _site_location(ld.site)))
-            out.extend(self.entity_list(self.field(ld, "added_entities"), _site_location(ld.site)))
+        ordered = sorted(descriptions, key=_order)
+        for ld in ordered:
+            at = _site_location(ld.site)
+            actions = self.entity_list(self.field(ld, "initial_entities"), at) + \
+                self.entity_list(self.field(ld, "added_entities"), at)
+            out.extend(_alternative(ld, ordered, actions, at) if len(ordered) > 1 else actions)
         return out, None
 
     def entity_list(self, value: Value, at: Location) -> list[Action]:
