@@ -51,15 +51,9 @@ class Join:
 
 @dataclass(frozen=True)
 class Unknown:
-    """A value the front end cannot follow; ``reason`` ends up in the report.
-
-    ``term`` is the unevaluated substitution, when it is one the front end can spell out
-    (``PythonExpression([LaunchConfiguration('stream')])`` as its class and arguments): its
-    value stays unknown, but two of them are the same expression, so ``if`` and ``unless``
-    of it are each other's negation."""
+    """A value the front end cannot follow; ``reason`` ends up in the report."""
 
     reason: str
-    term: tuple | None = None
 
 
 Subst = Union[Text, Var, PkgShare, ThisDir, Join, Unknown]

@@ -75,10 +75,8 @@ def guard(condition: Condition | None) -> Guard | None:
 
 
 def _readable(expression: Subst) -> bool:
-    """Whether two conditions on ``expression`` can be compared: its parts are known, or
-    spelled out (an unevaluated substitution of known arguments is the same one twice)."""
     if isinstance(expression, Unknown):
-        return expression.term is not None and all(_readable(part) for _, part in expression.term[1])
+        return False
     if isinstance(expression, Join):
         return all(_readable(part) for part in expression.parts)
     if isinstance(expression, Var) and expression.default is not None:

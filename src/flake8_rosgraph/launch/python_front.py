@@ -394,8 +394,7 @@ class PythonFront:
             return ThisDir()
         if kind in _PKG_SHARE:
             return PkgShare(self.subst(record.field("package") or BOTTOM))
-        term = (kind, tuple((name, self.subst(value)) for name, value in record.fields))
-        return Unknown(f"{short} is not evaluated statically", term)
+        return Unknown(f"{short} is not evaluated statically")
 
     def condition(self, obj: Obj) -> Condition | None:
         value = self.field(obj, "condition")
