@@ -39,7 +39,7 @@ def systems_for(root: Path, graph: RosGraph, analysis: Analysis | None,
     diagnostics = [] if diagnostics is None else diagnostics
     packages = find_packages(root) if walk else PackageIndex()
     diagnostics.extend(packages.diagnostics)
-    targets = TargetIndex(analysis, packages, tuple(n for n in graph.nodes if n.language == "cpp"))
+    targets = TargetIndex(analysis, packages)
     reader = LaunchReader(root, analysis)
     executor = Executor(root, packages, reader, targets.resolve)
     frontend = frontend_launch_files(root, diagnostics) if walk else []

@@ -23,7 +23,7 @@ from typing import Any
 
 from ..graph import names
 from ..graph.model import NAMED_KINDS, Diagnostic, Entity, Location, RosGraph, RosNode
-from .model import BOUND_STATUSES, Instance, LaunchedNode, System
+from .model import Instance, LaunchedNode, System
 from .param_files import Section, YamlError, read_param_file
 
 
@@ -109,7 +109,7 @@ class Instantiator:
                     if key not in reported:
                         reported.add(key)
                         system.problems.append(Diagnostic(file.location.path, file.location.line, problem))
-            if launched.target.status not in BOUND_STATUSES:
+            if launched.target.status != "found":
                 continue
             classes = set(launched.target.node_classes)
             for site in launched.target.node_sites:
@@ -272,7 +272,7 @@ def apply_systems(graph: RosGraph, systems: list[System], placeholders: bool) ->
             nodes.setdefault(_node_key(instance.node), instance.node)
         if placeholders:
             for launched in system.nodes:
-                if launched.target.status not in BOUND_STATUSES:
+                if launched.target.status != "found":
                     node = _placeholder(launched)
                     nodes.setdefault(_node_key(node), node)
     out = RosGraph(sorted(nodes.values(), key=lambda n: (n.fqn or "", n.location, _node_key(n))),

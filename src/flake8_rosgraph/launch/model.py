@@ -50,17 +50,11 @@ class ParamFileRef:
     written: str = ""  # the reference as the launch file wrote it, for messages
 
 
-#: Target statuses whose code nodes a launched node is bound to (see :class:`ExecutableRef`).
-BOUND_STATUSES = ("found", "cpp")
-
-
 @dataclass(frozen=True)
 class ExecutableRef:
     """Where ``package`` + ``executable`` lead in the workspace.
 
-    ``status`` is ``"found"`` (code nodes known), ``"cpp"`` (a C++ executable whose
-    source files create rclcpp nodes the C++ front end read: partner ends, bound for
-    their names, never judged as complete), ``"no-python"`` (a real
+    ``status`` is ``"found"`` (code nodes known), ``"no-python"`` (a real
     executable the analyser cannot look into: C++, a script it cannot map),
     ``"missing-package"`` (the package is not in the workspace: an installed
     one, not judged), ``"missing-executable"`` (the package is in the

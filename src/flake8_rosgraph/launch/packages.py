@@ -21,8 +21,7 @@ import ast
 import configparser
 import os
 import xml.parsers.expat
-import posixpath
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..absint.folding import MAX_STR, safe_template, wide_template
@@ -43,8 +42,6 @@ class Executable:
     function: str | None = None
     script: str | None = None     # root-relative path of an installed Python script
     language: str = "python"      # "python" | "cpp"
-    #: Root-relative source files a C++ target is built from (as CMake lists them literally).
-    sources: tuple[str, ...] = ()
 
 
 @dataclass
@@ -297,10 +294,7 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
             if "$" in built:
                 complete = False
                 continue
-            known = package.executables.setdefault(built, Executable(built, language="cpp"))
-            sources = _sources(name, args, folder, root)
-            if sources and known.language == "cpp":
-                package.executables[built] = replace(known, sources=known.sources + sources)
+            package.executables.setdefault(built, Executable(built, language="cpp"))
         elif name == "install" and args and args[0].upper() == "PROGRAMS" and "DESTINATION" in args:
             at = args.index("DESTINATION")
             if args[at + 1:at + 2] not in (["lib/${PROJECT_NAME}"], [f"lib/{project}"]):
@@ -313,20 +307,6 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
                 package.executables.setdefault(Path(item).name, Executable(
                     Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
     return complete
-
-
-#: Endings of C++ source files in a target's source list.
-_CPP_SOURCES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".h", ".hh")
-
-
-def _sources(command: str, args: list[str], folder: Path, root: Path) -> tuple[str, ...]:
-    """The literal source files of an ``add_executable``-like command, root-relative."""
-    if not (command.endswith("add_executable") or command.startswith("ament_add_")):
-        return ()
-    base = _rel(folder, root)
-    paths = (posixpath.normpath(posixpath.join(base, arg)) for arg in args[1:]
-             if arg.lower().endswith(_CPP_SOURCES) and "$" not in arg and not arg.startswith("/"))
-    return tuple(path for path in paths if not path.startswith(".."))
 
 
 def _built_executable(command: str, args: list[str]) -> str | None:

@@ -14,20 +14,15 @@ from collections import deque
 from ..absint.engine import Analysis
 from ..absint.values import Obj
 from ..graph.builder import _class_name
-from ..graph.model import Location, RosNode
+from ..graph.model import Location
 from .model import ExecutableRef
 from .packages import Executable, PackageIndex
 
 
 class TargetIndex:
-    def __init__(self, analysis: Analysis | None, packages: PackageIndex,
-                 cpp_nodes: tuple[RosNode, ...] = ()) -> None:
+    def __init__(self, analysis: Analysis | None, packages: PackageIndex) -> None:
         self.analysis = analysis
         self.packages = packages
-        #: The rclcpp nodes the C++ front end read, by source file.
-        self.cpp_sites: dict[str, list[tuple[Location, str | None]]] = {}
-        for node in cpp_nodes:
-            self.cpp_sites.setdefault(node.location.path, []).append((node.location, node.cls))
         self.callees: dict[tuple, set[tuple]] = {}
         if analysis is not None:
             for key, readers in analysis.readers.items():
@@ -47,20 +42,9 @@ class TargetIndex:
         if exe is None:
             status = "missing-executable" if found.complete else "unknown"
             return ExecutableRef(status, known=tuple(sorted(found.executables)))
-        if exe.language == "cpp":
-            return self.cpp_target(exe)
-        if self.analysis is None:
+        if exe.language != "python" or self.analysis is None:
             return ExecutableRef("no-python")
         return self.python_target(exe)
-
-    def cpp_target(self, exe: Executable) -> ExecutableRef:
-        """A C++ executable: the rclcpp nodes created in the files it is built from."""
-        sites = sorted({site for source in exe.sources for site in self.cpp_sites.get(source, ())},
-                       key=lambda site: (site[0], site[1] or ""))
-        if not sites:
-            return ExecutableRef("no-python")
-        return ExecutableRef("cpp", node_sites=tuple(dict.fromkeys(loc for loc, _ in sites)),
-                             node_classes=tuple(sites))
 
     def python_target(self, exe: Executable) -> ExecutableRef:
         program = self.analysis.program

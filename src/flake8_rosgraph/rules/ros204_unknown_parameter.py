@@ -129,11 +129,9 @@ def _unseen_receivers(system: System) -> set[Location]:
 
 def _declared(instance: Instance) -> set[str] | None:
     """The parameters the node's code declares; ``None`` when any name may be accepted (it
-    allows undeclared parameters, or declares one whose name is unknown) or the declarations
-    are not known whole (a C++ node, read only for its partner ends)."""
+    allows undeclared parameters, or declares one whose name is unknown)."""
     names_ = [e.name for e in instance.code.entities if e.kind == "parameters"]
-    if instance.code.language != "python" \
-            or instance.code.location in instance.launched.target.open_parameter_sites \
+    if instance.code.location in instance.launched.target.open_parameter_sites \
             or any(name is None for name in names_):
         return None
     return set(names_)
