@@ -591,3 +591,32 @@ def test_generic_publishers_and_subscriptions_take_the_type_as_a_string(tmp_path
     assert ("/player", "publishers", "/imu", "sensor_msgs/msg/Imu") in found
     assert ("/player", "subscriptions", "/odom", "nav_msgs/msg/Odometry") in found
     assert ("/player", "publishers", "/replayed", None) in found  # a type only known at run time
+
+
+def test_a_node_name_passed_through_a_constructor_has_the_root_namespace(tmp_path):
+    """``Node(name)`` runs in ``/`` (rcl maps the empty namespace to the root): no name problem
+    (aws-deepracer's ``CtrlNodeMgr(nodeName) : Node(nodeName)`` was marked "namespace '' is empty");
+    a namespace given with a trailing slash still is one."""
+    write_package(tmp_path, "vehicle_ctrl", {"src/ctrl_node.cpp": """
+        #include "rclcpp/rclcpp.hpp"
+        #include "std_srvs/srv/trigger.hpp"
+        class CtrlNodeMgr : public rclcpp::Node
+        {
+        public:
+          explicit CtrlNodeMgr(const std::string & node_name) : Node(node_name) {}
+        };
+        class BadNs : public rclcpp::Node
+        {
+        public:
+          BadNs() : Node("bad_ns", "robot/") {}
+        };
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          auto node = std::make_shared<CtrlNodeMgr>("control_node");
+          rclcpp::spin(node);
+        }
+    """})
+    nodes, _ = cpp_graph(tmp_path)
+    assert {(n.fqn, n.invalid) for n in nodes} == {
+        ("/control_node", None), ("/robot/bad_ns", "namespace '/robot/' ends with '/'")}

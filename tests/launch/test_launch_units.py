@@ -138,3 +138,40 @@ def test_cmake_executables_under_other_names_are_known(tmp_path):
                                            "publisher_node",
                                            "resize_node", "rotate_bin", "test_rotate_live"]
     assert package.complete is False  # ${TOOL_NAME}: the list may hold more
+
+
+def test_cmake_subdirectories_add_their_executables(tmp_path):
+    """``add_subdirectory`` is followed (moveit2_tutorials builds every example in its own folder):
+    its targets are the package's, with the package's PROJECT_NAME; a folder named by a variable,
+    or one that is not there, leaves the list incomplete; a folder outside the workspace is not read."""
+    pkg = tmp_path / "arm_tutorials"
+    (pkg / "examples" / "planning").mkdir(parents=True)
+    (pkg / "examples" / "servo" / "nested").mkdir(parents=True)
+    (pkg / "package.xml").write_text("<package><name>arm_tutorials</name></package>")
+    (pkg / "CMakeLists.txt").write_text(
+        "project(arm_tutorials)\n"
+        "add_subdirectory(examples/planning)\n"
+        "add_subdirectory(examples/servo)\n")
+    (pkg / "examples" / "planning" / "CMakeLists.txt").write_text(
+        "add_executable(planning_tutorial src/planning_tutorial.cpp)\n"
+        "install(PROGRAMS scripts/plan.py DESTINATION lib/${PROJECT_NAME})\n")
+    (pkg / "examples" / "servo" / "CMakeLists.txt").write_text(
+        "add_executable(servo_tutorial servo_tutorial.cpp)\nadd_subdirectory(nested)\n"
+        "add_subdirectory(examples/servo)\n")  # not there: the list may hold more
+    (pkg / "examples" / "servo" / "servo_tutorial.cpp").write_text("int main() { return 0; }\n")
+    (pkg / "examples" / "servo" / "nested" / "CMakeLists.txt").write_text(
+        "add_executable(${PROJECT_NAME}_teleop teleop.cpp)\n")
+    package = find_packages(tmp_path).packages["arm_tutorials"]
+    assert sorted(package.executables) == ["arm_tutorials_teleop", "plan.py", "planning_tutorial", "servo_tutorial"]
+    assert package.executables["servo_tutorial"].sources == ("arm_tutorials/examples/servo/servo_tutorial.cpp",)
+    assert package.complete is False
+    (pkg / "examples" / "servo" / "CMakeLists.txt").write_text("add_executable(servo_tutorial servo_tutorial.cpp)\n")
+    assert find_packages(tmp_path).packages["arm_tutorials"].complete is True
+    (pkg / "CMakeLists.txt").write_text("project(arm_tutorials)\nadd_subdirectory(${EXAMPLES_DIR})\n")
+    assert find_packages(tmp_path).packages["arm_tutorials"].complete is False
+    outside = tmp_path.parent / (tmp_path.name + "_outside")
+    outside.mkdir(exist_ok=True)
+    (outside / "CMakeLists.txt").write_text("add_executable(stray stray.cpp)\n")
+    (pkg / "CMakeLists.txt").write_text(f"project(arm_tutorials)\nadd_subdirectory(../../{outside.name})\n")
+    package = find_packages(pkg).packages["arm_tutorials"]
+    assert "stray" not in package.executables and package.complete is False

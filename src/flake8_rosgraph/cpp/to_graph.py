@@ -244,7 +244,8 @@ class Joiner:
             if decl.base not in NODE_BASES and not self._is_node_base(decl.base or "", decl.package, path):
                 return  # a base initialiser of a class that is no node
         made = [RosNode(name, None if ns is None else names.normalize_namespace(ns), decl.location,
-                        decl.cls, invalid=_node_problem(name, ns), language="cpp")
+                        decl.cls, invalid=_node_problem(name, None if ns is None else names.normalize_namespace(ns)),
+                        language="cpp")
                 for name in decl.names for ns in decl.namespaces]
         self._decl_nodes[decl.key] = made
         if cls_key is not None:

@@ -51,9 +51,15 @@ class Join:
 
 @dataclass(frozen=True)
 class Unknown:
-    """A value the front end cannot follow; ``reason`` ends up in the report."""
+    """A value the front end cannot follow; ``reason`` ends up in the report.
+
+    ``key``: for a value computed from readable parts that the analysis does not evaluate
+    (``PythonExpression([LaunchConfiguration('stream')])``), those parts: two such values
+    with one key are one expression, so ``if=`` and ``unless=`` of it still exclude each
+    other, though its value stays unknown."""
 
     reason: str
+    key: "Subst | None" = None
 
 
 Subst = Union[Text, Var, PkgShare, ThisDir, Join, Unknown]

@@ -76,7 +76,7 @@ def guard(condition: Condition | None) -> Guard | None:
 
 def _readable(expression: Subst) -> bool:
     if isinstance(expression, Unknown):
-        return False
+        return expression.key is not None and _readable(expression.key)
     if isinstance(expression, Join):
         return all(_readable(part) for part in expression.parts)
     if isinstance(expression, Var) and expression.default is not None:

@@ -98,6 +98,8 @@ def _build(name: str, args: list[Subst]) -> Subst:
         return PkgShare(args[0])
     if name == "dirname" and not args:
         return ThisDir()
+    if name == "eval" and args:  # one expression: its if= and unless= exclude each other
+        return Unknown(f"substitution $({name} …) is not evaluated statically", key=Join(tuple(args)))
     return Unknown(f"substitution $({name} …) is not evaluated statically")
 
 

@@ -17,13 +17,15 @@ What ``--ros-args`` from launch do when the node starts (rcl ``node.c``,
 """
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from ..graph import names
 from ..graph.model import NAMED_KINDS, Diagnostic, Entity, Location, RosGraph, RosNode
-from .model import Instance, LaunchedNode, System
+from ..safe_io import read_text
+from .model import ExecutableRef, Instance, LaunchedNode, System
 from .param_files import Section, YamlError, read_param_file
 
 
@@ -42,6 +44,8 @@ def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
         return None
     return launched.namespace if launched.namespace is not None else code.namespace
 
+
+_IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
 
 #: Stands for a node whose name is unknown where the result does not depend on it.
 _ANY_NODE = "unknown"
@@ -80,6 +84,7 @@ class Instantiator:
     def __init__(self, root: Path) -> None:
         self.root = Path(root)
         self._files: dict[str, list[Section] | str] = {}
+        self._words: dict[str, frozenset[str]] = {}
 
     def sections(self, path: str) -> list[Section] | str:
         """A parameter file's sections, or why it cannot be read."""
@@ -109,6 +114,10 @@ class Instantiator:
                     if key not in reported:
                         reported.add(key)
                         system.problems.append(Diagnostic(file.location.path, file.location.line, problem))
+            if launched.target.status == "no-python":
+                system.instances.extend(self.instance(launched, code, analysed=False)
+                                        for code in self.cpp_nodes(graph, launched.target))
+                continue
             if launched.target.status != "found":
                 continue
             classes = set(launched.target.node_classes)
@@ -117,7 +126,34 @@ class Instantiator:
                     if (site, code.cls) in classes:
                         system.instances.append(self.instance(launched, code))
 
-    def instance(self, launched: LaunchedNode, code: RosNode) -> Instance:
+    def cpp_nodes(self, graph: RosGraph, target: ExecutableRef) -> list[RosNode]:
+        """The rclcpp nodes a C++ executable runs: those created in its source files, and those of
+        the node classes its sources name (``make_shared<Driver>()`` in ``main.cpp``, the class
+        being in a library) or it registers as its component (``PLUGIN "pkg::Driver"``)."""
+        if not target.cpp_sources and not target.cpp_plugins:
+            return []
+        sources = set(target.cpp_sources)
+        words: set[str] = {plugin.rsplit("::", 1)[-1] for plugin in target.cpp_plugins}
+        for path in target.cpp_sources:
+            words |= self._identifiers(path)
+        # A C++ node of unknown name stands for the owner of entities made through a pointer
+        # (``node->create_client``), not for a node of its own: it stays as written.
+        return [node for node in graph.nodes if node.language == "cpp" and node.name is not None and (
+            node.location.path in sources or (node.cls is not None and node.cls.rsplit("::", 1)[-1] in words))]
+
+    def _identifiers(self, path: str) -> frozenset[str]:
+        if path not in self._words:
+            try:
+                text = read_text(self.root / path, self.root)
+            except (OSError, UnicodeDecodeError, ValueError):
+                text = ""
+            self._words[path] = frozenset(_IDENTIFIER.findall(text))
+        return self._words[path]
+
+    def instance(self, launched: LaunchedNode, code: RosNode, analysed: bool = True) -> Instance:
+        """``analysed``: false for a C++ node, whose names and parameters the analysis reads
+        only in part (literal names, no generated code): its launch name, namespace and remaps
+        apply, but nothing is judged "unused" on it."""
         name, namespace = _node_name(launched, code), _namespace(launched, code)
         rules = [names.RemapRule(r.source, r.target) for r in launched.remaps]
         fqn = RosNode(name, namespace, code.location).fqn
@@ -149,8 +185,8 @@ class Instantiator:
                        conditional=code.conditional or launched.conditional,
                        invalid=code.invalid, entities=entities, language=code.language)
         node.launch = launch_info(launched)
-        return Instance(launched, node, code, frozenset(hits), settings, known,
-                        tuple(sorted(expanded)))
+        return Instance(launched, node, code, frozenset(hits), settings,
+                        known and analysed, tuple(sorted(expanded)), analysed=analysed)
 
     @staticmethod
     def resolve(entity: Entity, name: str | None, namespace: str | None,
@@ -271,8 +307,9 @@ def apply_systems(graph: RosGraph, systems: list[System], placeholders: bool) ->
         for instance in system.instances:
             nodes.setdefault(_node_key(instance.node), instance.node)
         if placeholders:
+            bound = {id(i.launched) for i in system.instances}
             for launched in system.nodes:
-                if launched.target.status != "found":
+                if launched.target.status != "found" and id(launched) not in bound:
                     node = _placeholder(launched)
                     nodes.setdefault(_node_key(node), node)
     out = RosGraph(sorted(nodes.values(), key=lambda n: (n.fqn or "", n.location, _node_key(n))),
@@ -294,13 +331,27 @@ class LaunchScopes:
         self._systems: dict[tuple, set[str]] = {}
         self._code: dict[tuple, RosNode] = {}
         self._written: set[tuple[str, str]] = set()
+        #: Namespaces (other than the root) of launched nodes whose code the analysis does not see.
+        self._foreign: set[str] = set()
         for system in systems:
+            bound = {id(instance.launched) for instance in system.instances}
+            self._foreign.update(
+                launched.namespace.rstrip("/") + "/" for launched in system.nodes
+                if launched.target.status not in ("found", "missing-executable") and id(launched) not in bound
+                and launched.namespace is not None and launched.namespace.strip("/")
+                and not launched.is_unresolved("namespace"))
             for instance in system.instances:
                 key = _node_key(instance.node)
                 self._systems.setdefault(key, set()).add(system.launch_file)
                 self._code.setdefault(key, instance.code)
                 self._written.update((e.kind, e.name) for e in instance.code.entities
                                      if e.name is not None)
+
+    def in_foreign_namespace(self, name: str | None) -> bool:
+        """Whether ``name`` lies in the namespace a launch file starts a node of unseen code in
+        (an installed package's executable, a C++ one not tied to code): that program's relative
+        names land there, so the name is its interface."""
+        return name is not None and any(name.startswith(ns) for ns in self._foreign)
 
     def written_name(self, kind: str, name: str) -> bool:
         """Whether a launched node's code, as written (run without its launch file), uses ``name``."""

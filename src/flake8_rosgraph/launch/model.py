@@ -75,6 +75,10 @@ class ExecutableRef:
     entry: str | None = None
     #: The executables the package does have, for the ROS201 message.
     known: tuple[str, ...] = ()
+    #: A C++ executable (``"no-python"``): its source files and component classes as CMake names
+    #: them, which tie it to the workspace's rclcpp nodes (:mod:`.instantiate`).
+    cpp_sources: tuple[str, ...] = ()
+    cpp_plugins: tuple[str, ...] = ()
 
 
 @dataclass
@@ -134,6 +138,9 @@ class Instance:
     names_known: bool = True
     #: The node's names expanded in its launched name and namespace, before remapping.
     expanded: tuple[str, ...] = ()
+    #: Whether the node's code is analysed in full (Python); a C++ node is bound for its names
+    #: only, and the rules that judge what a node lacks (ROS202, ROS204) leave it out.
+    analysed: bool = True
 
 
 @dataclass

@@ -42,6 +42,10 @@ class Executable:
     function: str | None = None
     script: str | None = None     # root-relative path of an installed Python script
     language: str = "python"      # "python" | "cpp"
+    #: A compiled executable's source files (root-relative) and the component classes
+    #: (``ns::Class``) it runs, as far as CMake names them literally.
+    sources: tuple[str, ...] = ()
+    plugins: tuple[str, ...] = ()
 
 
 @dataclass
@@ -276,25 +280,64 @@ def setup_entry_points(tree: ast.Module) -> dict | None:
 
 # -- CMakeLists.txt ---------------------------------------------------------------------------
 
+#: How many CMakeLists.txt files ``add_subdirectory`` is followed through in one package.
+MAX_CMAKE_FILES = 64
+#: ``add_executable`` keywords that are no source file.
+_EXECUTABLE_KEYWORDS = frozenset({"WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "IMPORTED", "ALIAS", "GLOBAL"})
+
+
 def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
-                       notes: list[Diagnostic]) -> bool:
-    """Add the CMake targets and installed scripts; false when a name is not literal."""
+                       notes: list[Diagnostic], project: str | None = None,
+                       seen: set[Path] | None = None) -> bool:
+    """Add the CMake targets and installed scripts; false when a name is not literal.
+
+    ``add_subdirectory(dir)`` is followed into ``dir/CMakeLists.txt`` (inside the workspace):
+    its targets are the package's too, and it inherits ``PROJECT_NAME`` unless it has its own
+    ``project()``; a subdirectory that cannot be read leaves the list incomplete.
+    """
+    seen = set() if seen is None else seen
+    seen.add(cmake)
     try:
         commands = cmake_commands(read_text(cmake, root))
     except (OSError, UnicodeDecodeError) as exc:
         _unread(cmake, root, exc, notes)
         return False
     complete = True
-    project = next((args[0] for name, args in commands if name == "project" and args), None)
+    project = next((args[0] for name, args in commands if name == "project" and args), project)
+    libraries: dict[str, tuple[str, ...]] = {}
     for name, args in commands:
         if project is not None:
             args = [arg.replace("${PROJECT_NAME}", project) for arg in args]
+        if name == "add_subdirectory" and args:
+            sub = Path(os.path.normpath(folder / args[0]))
+            sub_cmake = sub / "CMakeLists.txt"
+            if "$" in args[0] or len(seen) > MAX_CMAKE_FILES \
+                    or not is_within(sub_cmake, root) or not is_regular_file(sub_cmake):
+                complete = False
+            elif sub_cmake not in seen:
+                complete = _cmake_executables(sub_cmake, sub, root, package, notes, project, seen) and complete
+            continue
+        if name == "add_library" and args:
+            libraries[args[0]] = _source_files(args[1:], folder, root)
         built = _built_executable(name, args)
         if built is not None:
             if "$" in built:
                 complete = False
                 continue
-            package.executables.setdefault(built, Executable(built, language="cpp"))
+            sources: tuple[str, ...] = ()
+            plugins: tuple[str, ...] = ()
+            if name.endswith("add_executable") and args[1:2] != ["IMPORTED"]:
+                sources = _source_files(args[1:], folder, root)
+            elif name == "rclcpp_components_register_node":
+                sources = libraries.get(args[0], ())
+                if "PLUGIN" in args[:-1]:
+                    plugins = (args[args.index("PLUGIN") + 1],)
+            exe = package.executables.get(built)
+            if exe is None or exe.language == "cpp":
+                package.executables[built] = Executable(
+                    built, language="cpp",
+                    sources=tuple(sorted(set(exe.sources if exe else ()) | set(sources))),
+                    plugins=tuple(sorted(set(exe.plugins if exe else ()) | set(plugins))))
         elif name == "install" and args and args[0].upper() == "PROGRAMS" and "DESTINATION" in args:
             at = args.index("DESTINATION")
             if args[at + 1:at + 2] not in (["lib/${PROJECT_NAME}"], [f"lib/{project}"]):
@@ -307,6 +350,18 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
                 package.executables.setdefault(Path(item).name, Executable(
                     Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
     return complete
+
+
+def _source_files(args: list[str], folder: Path, root: Path) -> tuple[str, ...]:
+    """The literal C++ source files among a target's arguments (root-relative, existing)."""
+    out = []
+    for arg in args:
+        if arg in _EXECUTABLE_KEYWORDS or "$" in arg or not arg.endswith((".cpp", ".cc", ".cxx", ".c++", ".C")):
+            continue
+        path = Path(os.path.normpath(folder / arg))
+        if is_within(path, root) and is_regular_file(path):
+            out.append(_rel(path, root))
+    return tuple(out)
 
 
 def _built_executable(command: str, args: list[str]) -> str | None:

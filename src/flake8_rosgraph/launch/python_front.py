@@ -392,6 +392,9 @@ class PythonFront:
             return Join(parts.parts, "/") if isinstance(parts, Join) else parts
         if short == "ThisLaunchFileDir":
             return ThisDir()
+        if short == "PythonExpression":
+            return Unknown("PythonExpression is not evaluated statically",
+                           key=self.subst(record.field("expression") or BOTTOM))
         if kind in _PKG_SHARE:
             return PkgShare(self.subst(record.field("package") or BOTTOM))
         return Unknown(f"{short} is not evaluated statically")

@@ -42,7 +42,9 @@ class TargetIndex:
         if exe is None:
             status = "missing-executable" if found.complete else "unknown"
             return ExecutableRef(status, known=tuple(sorted(found.executables)))
-        if exe.language != "python" or self.analysis is None:
+        if exe.language == "cpp":
+            return ExecutableRef("no-python", cpp_sources=exe.sources, cpp_plugins=exe.plugins)
+        if self.analysis is None:
             return ExecutableRef("no-python")
         return self.python_target(exe)
 

@@ -37,6 +37,11 @@ since a typo usually hits a name that other nodes still use: see
   only subscribed, ``/local_costmap/clear_...`` only called): another
   program's interface.
 
+* or the name lies in the namespace in which a launch file of the workspace
+  starts a node whose code the analysis does not see (an installed package's
+  executable, a C++ executable it cannot tie to code): that program's own
+  relative names land there.
+
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
 of its own launch system.
@@ -106,7 +111,8 @@ class AbsenceRule(Rule):
             interface = (id(endpoint.node) not in wired
                          or index.same_role_nodes(endpoint) > 1
                          or namespace_of(endpoint.entity.name) in one_way
-                         or scopes.renamed(endpoint.node, endpoint.entity))
+                         or scopes.renamed(endpoint.node, endpoint.entity)
+                         or scopes.in_foreign_namespace(endpoint.entity.name))
             yield from self._report(endpoint, near_misses, interface, scopes, id(endpoint) in slips)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:

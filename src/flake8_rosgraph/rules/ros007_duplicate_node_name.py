@@ -89,18 +89,23 @@ class DuplicateNodeName(Rule):
         neither tied to code of the workspace (components, installed executables): the code
         pass above cannot see them, but the names alone clash."""
         for system in graph.systems:
-            first: dict[str, Location] = {}
+            first: dict[str, tuple[Location, bool]] = {}
+            # C++ executables tied to their code are also in the code pass: a pair of those is its.
+            bound = {id(instance.launched) for instance in system.instances}
             for launched in system.nodes:
                 if launched.target.status == "found" or launched.conditional or launched.name is None \
                         or launched.namespace is None or launched.unresolved:
                     continue
                 fqn = launched.namespace.rstrip("/") + "/" + launched.name
                 if fqn in first:
+                    where, first_bound = first[fqn]
+                    if first_bound and id(launched) in bound:
+                        continue
                     yield Finding(launched.location, self.code,
-                                  f"node '{fqn}' is also started at {first[fqn].short()} by the same "
-                                  f"launch file {system.launch_file}", ((first[fqn], f"node '{fqn}'"),))
+                                  f"node '{fqn}' is also started at {where.short()} by the same "
+                                  f"launch file {system.launch_file}", ((where, f"node '{fqn}'"),))
                 else:
-                    first[fqn] = launched.location
+                    first[fqn] = (launched.location, id(launched) in bound)
 
     def _duplicates(self, fqn: str, nodes: list[RosNode], together: _Together) -> Iterator[Finding]:
         # site -> partner site -> why they run together (the first reason found, in a fixed order)

@@ -5,7 +5,7 @@ from typing import Iterator
 
 from ..graph import names
 from ..graph.model import Location, RosGraph
-from ..launch.model import Instance, System
+from ..launch.model import Instance, LaunchedNode, System
 from .base import Finding, Rule, RuleConfig
 
 #: Parameters rclpy declares on every node by itself.
@@ -26,18 +26,24 @@ class UnknownParameter(Rule):
     value in the file — often a typo of the real name — has no effect.
 
     ## Known problems
-    Only nodes whose code is in the workspace are judged, and a node that
+    Only Python nodes whose code is in the workspace are judged (C++ nodes
+    may declare parameters through generated code), and a node that
     allows undeclared parameters (`allow_undeclared_parameters=True`) or
     declares one whose name the analysis cannot determine is skipped.
     `SetParameter` values (meant for every node of a scope) are not judged.
     rcl hands a process's parameters to every node it creates, so a value
     is reported only when no node of that process that receives it declares
-    it (a multi-node executable is judged as one process).
+    it (a multi-node executable is judged as one process). A value that one
+    place (a shared dictionary, a file section) hands to several launched
+    nodes is reported only when none of them declares it and all are
+    judged; and launch actions that start one node name under conditions
+    (the driver unless `use_fake_hardware`, its fake stand-in if it) share
+    their parameters: a value a stand-in declares, or a stand-in that is
+    not judged receives, is not reported on the other.
     A section with a wildcard (`/**:`, `*:`) is a configuration shared by
     every node it reaches — often read by the launch file or other tools
-    too — so a value there is reported only when none of the nodes of the
-    launch file that receive it declares it *and* it is a near miss of a
-    parameter one of them declares (`rte` beside `rate`).
+    too — so a value there is reported only when it is also a near miss of
+    a parameter one of its receivers declares (`rte` beside `rate`).
 
     ## Example
     ```yaml
@@ -65,37 +71,62 @@ class UnknownParameter(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         for system in graph.systems:
-            processes: dict[int, list[Instance]] = {}
-            for instance in system.instances:
-                processes.setdefault(id(instance.launched), []).append(instance)
-            declared = {id(i): _declared(i) for i in system.instances}
-            unseen = _unseen_receivers(system)
-            for process in processes.values():
-                yield from self._judge(process, declared, unseen, shared=False)
-            yield from self._judge(system.instances, declared, unseen, shared=True)
+            yield from self._system(system)
 
-    def _judge(self, instances: list[Instance], declared: dict[int, set[str] | None],
-               unseen: set[Location], shared: bool) -> Iterator[Finding]:
-        """The settings that reach ``instances`` and that none of them declares.
-
-        Without ``shared``: one launched executable, whose node-specific settings (inline,
-        a section naming the node) rcl hands to every node it creates.  With ``shared``:
-        the settings of wildcard sections, across the launch file, reported only as near
-        misses."""
+    def _system(self, system: System) -> Iterator[Finding]:
+        """rcl hands a process's parameters to every node it creates, and a launch file may hand
+        one parameter source (a dict it shares, a file section) to several processes: a value is
+        ignored only when no node that receives it from that place declares it, and that is known
+        only when every such node is analysed and declares parameters of known names only."""
+        processes: dict[int, list[Instance]] = {}
+        for instance in system.instances:
+            processes.setdefault(id(instance.launched), []).append(instance)
+        excused: set[tuple[str, Location]] = set()  # reaches a node that may declare it unseen
+        shared: set[tuple[str, Location]] = set()  # set in a wildcard section: near misses only
         receivers: dict[tuple[str, Location], list[Instance]] = {}
-        for instance in instances:
-            for name, _value, location, origin in instance.settings:
-                if origin == "scope" or (origin == "shared file") != shared \
-                        or name in BUILTIN_PARAMETERS or name.startswith(BUILTIN_PREFIXES):
-                    continue
-                receivers.setdefault((name, location), []).append(instance)
+        declared: dict[int, set[str]] = {}
+        # Conditional launch actions that start one node name are stand-ins for one another (the
+        # real driver unless use_fake_hardware, the fake if it): a parameter of that name set on
+        # one is meant for the role when a stand-in declares it or is not judged.
+        role_names: dict[str, set[str]] = {}
+        for launched in system.nodes:
+            process = processes.get(id(launched), [])
+            for role in _roles(launched, process):
+                role_names.setdefault(role, set()).update(
+                    _declared_names(process) if self._judged(launched, process)
+                    else {n for n, _ in _received(system, launched, process)})
+        for launched in system.nodes:
+            process = processes.get(id(launched), [])
+            if not self._judged(launched, process):
+                excused.update(_received(system, launched, process))
+                continue
+            meant_for_role = set().union(*(role_names[role] for role in _roles(launched, process)))
+            excused.update((n, loc) for i in process for n, _v, loc, _o in i.settings
+                           if n in meant_for_role and n not in _declared_names(process))
+            for instance in process:
+                declared[id(instance)] = {e.name for e in instance.code.entities if e.kind == "parameters"}
+                for name, _value, location, origin in instance.settings:
+                    if origin == "scope" or name in BUILTIN_PARAMETERS or name.startswith(BUILTIN_PREFIXES):
+                        continue
+                    if origin == "shared file":
+                        shared.add((name, location))
+                    receivers.setdefault((name, location), []).append(instance)
         for (name, location), nodes in sorted(receivers.items(), key=lambda kv: (kv[0][1], kv[0][0])):
-            known = [declared[id(i)] for i in nodes]
-            if location in unseen or any(k is None or name in k for k in known):
-                continue  # a receiver may declare it (or allows undeclared parameters)
-            close = sorted(k for k in set().union(*known) if k and names.edit_distance(k, name, 2) <= 2)
-            if close or not shared:
+            if (name, location) in excused or any(name in declared[id(i)] for i in nodes):
+                continue
+            known = set().union(*(declared[id(i)] for i in nodes))
+            close = sorted(k for k in known if k and names.edit_distance(k, name, 2) <= 2)
+            if close or (name, location) not in shared:
                 yield self._finding(name, location, nodes, close)
+
+    @staticmethod
+    def _judged(launched: LaunchedNode, process: list[Instance]) -> bool:
+        """Whether what the launched executable's nodes declare is known: analysed code, no node
+        open to any parameter, every declared name known."""
+        return bool(process) and all(
+            instance.analysed and instance.code.location not in launched.target.open_parameter_sites
+            and all(e.name is not None for e in instance.code.entities if e.kind == "parameters")
+            for instance in process)
 
     def _finding(self, name: str, location: Location, nodes: list[Instance],
                  close: list[str]) -> Finding:
@@ -109,29 +140,33 @@ class UnknownParameter(Rule):
         return Finding(location, self.code, message, related)
 
 
-def _unseen_receivers(system: System) -> set[Location]:
-    """Where settings are written that also reach a launched node whose code is not analysed
-    (C++, another workspace): the value may be meant for that node."""
-    bound = {id(i.launched) for i in system.instances}
-    out: set[Location] = set()
-    for launched in system.nodes:
-        if id(launched) in bound:
-            continue
-        out.update(p.location for p in launched.params)
-        fqn = None if launched.name is None or launched.namespace is None else \
-            launched.namespace.rstrip("/") + "/" + launched.name
-        for file in launched.param_files:
-            for section in system.parameter_files.get(file.path or "", []):
-                if fqn is None or section.matches(fqn):
-                    out.update(location for _, _, location in section.settings)
+def _received(system: System, launched: LaunchedNode, process: list[Instance]) -> set[tuple[str, Location]]:
+    """The ``(name, location)`` of every value that reaches a launched node not judged here: its
+    bound nodes' settings, else its inline values and the sections of its files that may match it
+    (all of them when its name is not known)."""
+    out = {(name, location) for instance in process for name, _value, location, _origin in instance.settings}
+    if process:
+        return out
+    out.update((p.name, p.location) for p in launched.params)
+    fqn = None if launched.name is None or launched.namespace is None or launched.unresolved \
+        else names.fqn(launched.name, launched.namespace)
+    for file in launched.param_files:
+        for section in system.parameter_files.get(file.path or "", []):
+            if fqn is None or section.matches(fqn):
+                out.update((name, location) for name, _value, location in section.settings)
     return out
 
 
-def _declared(instance: Instance) -> set[str] | None:
-    """The parameters the node's code declares; ``None`` when any name may be accepted (it
-    allows undeclared parameters, or declares one whose name is unknown)."""
-    names_ = [e.name for e in instance.code.entities if e.kind == "parameters"]
-    if instance.code.location in instance.launched.target.open_parameter_sites \
-            or any(name is None for name in names_):
-        return None
-    return set(names_)
+def _declared_names(process: list[Instance]) -> set[str]:
+    return {e.name for i in process for e in i.code.entities if e.kind == "parameters" and e.name is not None}
+
+
+def _roles(launched: LaunchedNode, process: list[Instance]) -> set[str]:
+    """The node names a conditional launch action runs (its stand-ins share them)."""
+    if not launched.conditional:
+        return set()
+    if process:
+        return {i.node.fqn for i in process if i.node.fqn is not None}
+    if launched.name is None or launched.unresolved:
+        return set()
+    return {names.fqn(launched.name, launched.namespace or "/")}

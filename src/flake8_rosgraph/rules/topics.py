@@ -31,8 +31,14 @@ class Endpoint:
     scope: str | None = None
 
     def sees(self, other: Endpoint) -> bool:
-        """Whether ``other`` can be this end's partner: production and test fixtures do not mix."""
-        return sees(self.scope, other.scope, other.node.location.path)
+        """Whether ``other`` can be this end's partner: production and test fixtures do not mix.
+
+        A production end belongs to the package under test when its node or the end itself is
+        created there: a package's code may create its ends on a node another package's class
+        makes (a framework's shared node, a library base class)."""
+        return sees(self.scope, other.scope, other.node.location.path) or (
+            self.scope is not None and other.scope is None
+            and sees(self.scope, None, other.entity.location.path))
 
     @property
     def sort_key(self) -> tuple:
