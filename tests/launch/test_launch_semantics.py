@@ -232,6 +232,29 @@ def test_a_setting_that_also_reaches_a_node_without_code_is_not_judged(tmp_path,
          "parameter 'grasp_force' is set for node '/gripper', which never declares it")]
 
 
+# -- ROS007 and conditions the analysis does not evaluate -----------------------------------------
+
+EXPRESSION = ("from launch.conditions import IfCondition, UnlessCondition\n"
+              "from launch.substitutions import LaunchConfiguration, PythonExpression\n")
+
+
+def test_if_and_unless_of_one_python_expression_never_run_together(tmp_path, analyse_root):
+    stream = "PythonExpression([LaunchConfiguration('stream')])"
+    root = workspace(tmp_path, {"scan.launch.py": EXPRESSION + launch_py(
+        f"Node(package='drivers', executable='lidar', name='scanner', condition=IfCondition({stream}))",
+        f"Node(package='drivers', executable='camera', name='scanner', condition=UnlessCondition({stream}))")})
+    assert findings(analyse_root, root, ("ROS007",)) == []
+
+
+def test_conditions_on_two_python_expressions_may_both_hold(tmp_path, analyse_root):
+    root = workspace(tmp_path, {"scan.launch.py": EXPRESSION + launch_py(
+        "Node(package='drivers', executable='lidar', name='scanner', "
+        "condition=IfCondition(PythonExpression([LaunchConfiguration('stream')])))",
+        "Node(package='drivers', executable='camera', name='scanner', "
+        "condition=UnlessCondition(PythonExpression([LaunchConfiguration('record')])))")})
+    assert [code for code, _, _ in findings(analyse_root, root, ("ROS007",))] == ["ROS007", "ROS007"]
+
+
 # -- ROS202 and private remaps --------------------------------------------------------------------
 
 def test_a_private_remap_that_matches_nothing(tmp_path, analyse_root):
