@@ -168,7 +168,19 @@ def _is_source_root(folder: Path) -> bool:
         and folder in source_roots(parent)
 
 
-def module_name(path: Path, root: Path) -> tuple[str, bool]:
+def _inside_package(folder: Path, memo: dict[Path, bool] | None) -> bool:
+    """Whether ``folder`` is a package folder the import name goes up through (kept in ``memo``
+    per folder when given: the files of a package ask about the same folders above them)."""
+    known = memo.get(folder) if memo is not None else None
+    if known is None:
+        known = (folder / "__init__.py").is_file() and folder != folder.parent \
+            and not _is_source_root(folder)
+        if memo is not None:
+            memo[folder] = known
+    return known
+
+
+def module_name(path: Path, root: Path, memo: dict[Path, bool] | None = None) -> tuple[str, bool]:
     """Dotted import name of ``path`` (packages found by ``__init__.py``), and whether it is a
     package.
 
@@ -180,8 +192,7 @@ def module_name(path: Path, root: Path) -> tuple[str, bool]:
     is_package = path.name == "__init__.py"
     parts = [] if is_package else [path.stem]
     folder = path.parent
-    while (folder / "__init__.py").is_file() and folder != folder.parent \
-            and not _is_source_root(folder):
+    while _inside_package(folder, memo):
         parts.insert(0, folder.name)
         if folder == root:
             break
@@ -204,8 +215,10 @@ def _chain_links(line: str) -> int:
     return line.count("(") + line.count(".") + line.count("[")
 
 
-def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module | Diagnostic:
-    """The module of ``path`` (``buffer``: the editor's unsaved content, parsed instead of the file)."""
+def read_module(path: Path, root: Path, buffer: bytes | None = None,
+                package_memo: dict[Path, bool] | None = None) -> Module | Diagnostic:
+    """The module of ``path`` (``buffer``: the editor's unsaved content, parsed instead of the file;
+    ``package_memo``: see :func:`module_name`)."""
     rel = relative(path, root)
     try:
         data = buffer if buffer is not None and len(buffer) <= MAX_FILE_BYTES else read_bytes(path, root, MAX_FILE_BYTES)
@@ -230,7 +243,7 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module |
         return Diagnostic(rel, exc.lineno or 1, f"syntax error: {exc.msg}")
     except (ValueError, RecursionError, MemoryError, OverflowError) as exc:
         return Diagnostic(rel, 1, f"cannot parse file: {type(exc).__name__}: {exc}"[:200])
-    name, is_package = module_name(path, root if root.is_dir() else root.parent)
+    name, is_package = module_name(path, root if root.is_dir() else root.parent, package_memo)
     wide = {} if text.isascii() else {  # numbered as Python's tokenizer numbers lines
         number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
     return Module(name, rel, tree, wide, is_package)
@@ -245,8 +258,9 @@ def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
     diagnostics: list[Diagnostic] = []
     names: set[str] = set()
     unsaved = dict(buffers)
+    package_memo: dict[Path, bool] = {}
     for path in python_files(root, diagnostics):
-        result = read_module(path, root, unsaved.get(os.path.abspath(path)))
+        result = read_module(path, root, unsaved.get(os.path.abspath(path)), package_memo)
         if isinstance(result, Diagnostic):
             diagnostics.append(result)
             continue
