@@ -9,6 +9,7 @@ is left out; everything else is still analysed.
 from __future__ import annotations
 
 import ast
+import functools
 import io
 import os
 import re
@@ -75,15 +76,24 @@ def left_out(folder: Path, filenames: list[str], root: Path) -> Diagnostic | Non
     if "package.xml" not in filenames:
         return None
     text = _small_text(folder / "package.xml", MAX_MANIFEST_BYTES)
-    try:
-        manifest = parse_manifest(text) if text is not None else None
-    except Exception:  # an unreadable manifest is reported by the package reader
-        return None
-    if manifest is not None and manifest.is_ros1:
+    ros1 = _ros1_package(text) if text is not None else None
+    if ros1 is not None:
         return Diagnostic(relative(folder / "package.xml", root), 1,
-                          f"ROS 1 (catkin) package '{manifest.name}': not analysed "
+                          f"ROS 1 (catkin) package '{ros1}': not analysed "
                           "(the rules check ROS 2 code)", "info")
     return None
+
+
+@functools.lru_cache(maxsize=1024)
+def _ros1_package(text: str) -> str | None:
+    """The name of the ROS 1 (catkin) package whose manifest is ``text``; ``None`` for any other
+    manifest or one that cannot be read. Kept by text: every walker of the workspace asks
+    about the same package.xml files."""
+    try:
+        manifest = parse_manifest(text)
+    except Exception:  # an unreadable manifest is reported by the package reader
+        return None
+    return manifest.name if manifest.is_ros1 else None
 
 
 def python_files(root: Path, skipped: list[Diagnostic] | None = None) -> list[Path]:
