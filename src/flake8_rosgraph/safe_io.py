@@ -57,14 +57,16 @@ def is_within(path: Path, folder: Path) -> bool:
 
 def resolve_inside(path: Path, root: Path | None) -> Path:
     """``path`` with links resolved; :class:`UnsafeFile` when that leaves ``root`` (``None``: anywhere)."""
-    resolved = Path(os.path.realpath(path))
+    # On the resolved texts (absolute, normalised): every file read passes here, and
+    # ``Path.parents`` builds a path object per folder above the file.
+    resolved = os.path.realpath(path)
     if root is not None:
-        base = Path(os.path.realpath(root))
-        if not base.is_dir():
-            base = base.parent
-        if not is_within(resolved, base):
+        base = os.path.realpath(root)
+        if not os.path.isdir(base):
+            base = os.path.dirname(base)
+        if resolved != base and not resolved.startswith(base if base.endswith(os.sep) else base + os.sep):
             raise UnsafeFile("not read: a link to a file outside the workspace")
-    return resolved
+    return Path(resolved)
 
 
 def _open_regular(path: Path, root: Path | None) -> tuple[int, os.stat_result]:

@@ -9,6 +9,7 @@ is left out; everything else is still analysed.
 from __future__ import annotations
 
 import ast
+import functools
 import io
 import os
 import re
@@ -75,15 +76,24 @@ def left_out(folder: Path, filenames: list[str], root: Path) -> Diagnostic | Non
     if "package.xml" not in filenames:
         return None
     text = _small_text(folder / "package.xml", MAX_MANIFEST_BYTES)
-    try:
-        manifest = parse_manifest(text) if text is not None else None
-    except Exception:  # an unreadable manifest is reported by the package reader
-        return None
-    if manifest is not None and manifest.is_ros1:
+    ros1 = _ros1_package(text) if text is not None else None
+    if ros1 is not None:
         return Diagnostic(relative(folder / "package.xml", root), 1,
-                          f"ROS 1 (catkin) package '{manifest.name}': not analysed "
+                          f"ROS 1 (catkin) package '{ros1}': not analysed "
                           "(the rules check ROS 2 code)", "info")
     return None
+
+
+@functools.lru_cache(maxsize=1024)
+def _ros1_package(text: str) -> str | None:
+    """The name of the ROS 1 (catkin) package whose manifest is ``text``; ``None`` for any other
+    manifest or one that cannot be read. Kept by text: every walker of the workspace asks
+    about the same package.xml files."""
+    try:
+        manifest = parse_manifest(text)
+    except Exception:  # an unreadable manifest is reported by the package reader
+        return None
+    return manifest.name if manifest.is_ros1 else None
 
 
 def python_files(root: Path, skipped: list[Diagnostic] | None = None) -> list[Path]:
@@ -168,7 +178,19 @@ def _is_source_root(folder: Path) -> bool:
         and folder in source_roots(parent)
 
 
-def module_name(path: Path, root: Path) -> tuple[str, bool]:
+def _inside_package(folder: Path, memo: dict[Path, bool] | None) -> bool:
+    """Whether ``folder`` is a package folder the import name goes up through (kept in ``memo``
+    per folder when given: the files of a package ask about the same folders above them)."""
+    known = memo.get(folder) if memo is not None else None
+    if known is None:
+        known = (folder / "__init__.py").is_file() and folder != folder.parent \
+            and not _is_source_root(folder)
+        if memo is not None:
+            memo[folder] = known
+    return known
+
+
+def module_name(path: Path, root: Path, memo: dict[Path, bool] | None = None) -> tuple[str, bool]:
     """Dotted import name of ``path`` (packages found by ``__init__.py``), and whether it is a
     package.
 
@@ -180,8 +202,7 @@ def module_name(path: Path, root: Path) -> tuple[str, bool]:
     is_package = path.name == "__init__.py"
     parts = [] if is_package else [path.stem]
     folder = path.parent
-    while (folder / "__init__.py").is_file() and folder != folder.parent \
-            and not _is_source_root(folder):
+    while _inside_package(folder, memo):
         parts.insert(0, folder.name)
         if folder == root:
             break
@@ -204,8 +225,10 @@ def _chain_links(line: str) -> int:
     return line.count("(") + line.count(".") + line.count("[")
 
 
-def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module | Diagnostic:
-    """The module of ``path`` (``buffer``: the editor's unsaved content, parsed instead of the file)."""
+def read_module(path: Path, root: Path, buffer: bytes | None = None,
+                package_memo: dict[Path, bool] | None = None) -> Module | Diagnostic:
+    """The module of ``path`` (``buffer``: the editor's unsaved content, parsed instead of the file;
+    ``package_memo``: see :func:`module_name`)."""
     rel = relative(path, root)
     try:
         data = buffer if buffer is not None and len(buffer) <= MAX_FILE_BYTES else read_bytes(path, root, MAX_FILE_BYTES)
@@ -230,7 +253,7 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None) -> Module |
         return Diagnostic(rel, exc.lineno or 1, f"syntax error: {exc.msg}")
     except (ValueError, RecursionError, MemoryError, OverflowError) as exc:
         return Diagnostic(rel, 1, f"cannot parse file: {type(exc).__name__}: {exc}"[:200])
-    name, is_package = module_name(path, root if root.is_dir() else root.parent)
+    name, is_package = module_name(path, root if root.is_dir() else root.parent, package_memo)
     wide = {} if text.isascii() else {  # numbered as Python's tokenizer numbers lines
         number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
     first = text.split("\n", 1)[0]
@@ -247,8 +270,9 @@ def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
     diagnostics: list[Diagnostic] = []
     names: set[str] = set()
     unsaved = dict(buffers)
+    package_memo: dict[Path, bool] = {}
     for path in python_files(root, diagnostics):
-        result = read_module(path, root, unsaved.get(os.path.abspath(path)))
+        result = read_module(path, root, unsaved.get(os.path.abspath(path)), package_memo)
         if isinstance(result, Diagnostic):
             diagnostics.append(result)
             continue

@@ -388,7 +388,7 @@ class CallSemantics:
             elif param.name not in bound:
                 bound[param.name] = TOP if args.star or param.default is None or not known_defaults \
                     else param.default
-        return {k: (TOP if v.is_bottom else v) for k, v in bound.items()}
+        return {k: (TOP if v.atoms is not None and not v.atoms else v) for k, v in bound.items()}  # ⊥ -> ⊤
 
     @staticmethod
     def argument_texts(model: FunctionModel, receiver: Atom | None, node) -> dict[str, str]:

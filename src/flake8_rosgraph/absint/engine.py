@@ -168,7 +168,7 @@ class Analysis:
             return
         old = self.heap.get(key, BOTTOM)
         new = old.join(value)
-        if new != old:
+        if new is not old and new != old:  # a join that adds nothing gives ``old`` itself
             growth = self._growth[key] = self._growth.get(key, 0) + 1
             if growth > HEAP_WIDEN_AFTER and _numbers_only(new):
                 new = TOP  # a counter (``self.count += 1``): widen instead of counting up

@@ -45,12 +45,16 @@ class InstanceFacts:
         self._record(CONSTRUCT, tuple(values), node)
 
     def record_attribute_store(self, target: ast.Attribute, holder: Value, value: Value) -> None:
+        if holder.atoms and not any(type(a) is Obj and type(a.cls) is Extern for a in holder.atoms):
+            return  # as in ``record_attribute_load``
         found, path = self._chain_root(target, holder)
         if found:
             self._record(SET_ATTRIBUTE, (("object", atoms(found)), ("path", const(path)),
                                          ("value", value)), target)
 
     def record_attribute_load(self, node: ast.Attribute, holder: Value) -> None:
+        if holder.atoms and not any(type(a) is Obj and type(a.cls) is Extern for a in holder.atoms):
+            return  # a known holder without library instances ends the chain at once (``_chain_root``)
         found, path = self._chain_root(node, holder)
         if found:
             probed = path.split(".", 1)[0] in self._probed_names()

@@ -13,6 +13,7 @@ executed: values the analysis could not pin down become
 from __future__ import annotations
 
 import re
+import weakref
 from typing import Any, Iterable
 
 from ..absint.engine import Analysis
@@ -57,13 +58,31 @@ def _site_location(site: str) -> Location:
 
 def launch_description(analysis: Analysis, path: str) -> Value | None:
     """The joined return summary of ``generate_launch_description`` in the module at ``path``."""
-    fids = [f.fid for f in analysis.program.functions
-            if f.module.path == path and f.parent is None and f.cls is None
-            and f.qualname == ENTRY_FUNCTION]
-    if not fids:
+    tasks = _entry_tasks(analysis).get(path)
+    if tasks is None:
         return None
-    return join_all(analysis.heap.get(("ret", task), BOTTOM) for task in analysis.effects
-                    if task[0] == "fn" and task[1] in fids)
+    return join_all(analysis.heap.get(("ret", task), BOTTOM) for task in tasks)
+
+
+#: Per analysis: (its task runs when indexed, module path → the tasks of its entry functions).
+_ENTRY_TASKS: "weakref.WeakKeyDictionary[Analysis, tuple[int, dict[str, list]]]" = weakref.WeakKeyDictionary()
+
+
+def _entry_tasks(analysis: Analysis) -> dict[str, list]:
+    """Module path → the tasks of its module-level ``generate_launch_description`` functions,
+    in the order of ``analysis.effects`` (an empty list for a module that has the function but
+    no task of it). Indexed once per analysis, not once per launch file."""
+    known = _ENTRY_TASKS.get(analysis)
+    if known is not None and known[0] == analysis.task_runs:
+        return known[1]
+    path_of = {f.fid: f.module.path for f in analysis.program.functions
+               if f.parent is None and f.cls is None and f.qualname == ENTRY_FUNCTION}
+    index: dict[str, list] = {path: [] for path in path_of.values()}
+    for task in analysis.effects:
+        if task[0] == "fn" and task[1] in path_of:
+            index[path_of[task[1]]].append(task)
+    _ENTRY_TASKS[analysis] = (analysis.task_runs, index)
+    return index
 
 
 def _order(atom: Any) -> tuple:
