@@ -255,6 +255,26 @@ def test_conditions_on_two_python_expressions_may_both_hold(tmp_path, analyse_ro
     assert [code for code, _, _ in findings(analyse_root, root, ("ROS007",))] == ["ROS007", "ROS007"]
 
 
+EVAL_XML = """<launch>
+  <arg name="vehicle_model" default=""/>
+  <group if="$(eval '&quot;$(var vehicle_model)&quot; {first} &quot;&quot;')">
+    <node pkg="drivers" exec="lidar" name="analyzer"/>
+  </group>
+  <group if="$(eval '&quot;$(var vehicle_model)&quot; {second} &quot;&quot;')">
+    <node pkg="drivers" exec="camera" name="analyzer"/>
+  </group>
+</launch>
+"""
+
+
+def test_one_comparison_with_eq_and_ne_never_runs_together(tmp_path, analyse_root):
+    root = workspace(tmp_path, {"analyzer.launch.xml": EVAL_XML.format(first="!=", second="==")})
+    assert findings(analyse_root, root, ("ROS007",)) == []
+    # the twin: the same comparison twice holds for both
+    root = workspace(tmp_path / "same", {"analyzer.launch.xml": EVAL_XML.format(first="==", second="==")})
+    assert [code for code, _, _ in findings(analyse_root, root, ("ROS007",))] == ["ROS007", "ROS007"]
+
+
 # -- ROS202 and private remaps --------------------------------------------------------------------
 
 def test_a_private_remap_that_matches_nothing(tmp_path, analyse_root):

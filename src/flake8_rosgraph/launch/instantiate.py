@@ -17,14 +17,12 @@ What ``--ros-args`` from launch do when the node starts (rcl ``node.c``,
 """
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from ..graph import names
 from ..graph.model import NAMED_KINDS, Diagnostic, Entity, Location, RosGraph, RosNode
-from ..safe_io import read_text
 from .model import ExecutableRef, Instance, LaunchedNode, System
 from .param_files import Section, YamlError, read_param_file
 
@@ -44,8 +42,6 @@ def _namespace(launched: LaunchedNode, code: RosNode) -> str | None:
         return None
     return launched.namespace if launched.namespace is not None else code.namespace
 
-
-_IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
 
 #: Stands for a node whose name is unknown where the result does not depend on it.
 _ANY_NODE = "unknown"
@@ -84,7 +80,6 @@ class Instantiator:
     def __init__(self, root: Path) -> None:
         self.root = Path(root)
         self._files: dict[str, list[Section] | str] = {}
-        self._words: dict[str, frozenset[str]] = {}
 
     def sections(self, path: str) -> list[Section] | str:
         """A parameter file's sections, or why it cannot be read."""
@@ -127,28 +122,24 @@ class Instantiator:
                         system.instances.append(self.instance(launched, code))
 
     def cpp_nodes(self, graph: RosGraph, target: ExecutableRef) -> list[RosNode]:
-        """The rclcpp nodes a C++ executable runs: those created in its source files, and those of
-        the node classes its sources name (``make_shared<Driver>()`` in ``main.cpp``, the class
-        being in a library) or it registers as its component (``PLUGIN "pkg::Driver"``)."""
-        if not target.cpp_sources and not target.cpp_plugins:
+        """The rclcpp nodes a C++ executable runs: those created in its source files (as CMake
+        lists them) and those of the class it registers as its component (``PLUGIN
+        "pkg::Driver"``); when those create none (its ``main`` only names a class of a
+        library it links), the nodes of the linked libraries' sources if they are of one class.
+        No tie is guessed from words in the sources (``Joy`` in ``sensor_msgs::msg::Joy``)."""
+        if not target.cpp_sources and not target.cpp_plugins and not target.cpp_linked:
             return []
-        sources = set(target.cpp_sources)
-        words: set[str] = {plugin.rsplit("::", 1)[-1] for plugin in target.cpp_plugins}
-        for path in target.cpp_sources:
-            words |= self._identifiers(path)
         # A C++ node of unknown name stands for the owner of entities made through a pointer
         # (``node->create_client``), not for a node of its own: it stays as written.
-        return [node for node in graph.nodes if node.language == "cpp" and node.name is not None and (
-            node.location.path in sources or (node.cls is not None and node.cls.rsplit("::", 1)[-1] in words))]
-
-    def _identifiers(self, path: str) -> frozenset[str]:
-        if path not in self._words:
-            try:
-                text = read_text(self.root / path, self.root)
-            except (OSError, UnicodeDecodeError, ValueError):
-                text = ""
-            self._words[path] = frozenset(_IDENTIFIER.findall(text))
-        return self._words[path]
+        named = [node for node in graph.nodes if node.language == "cpp" and node.name is not None]
+        sources = set(target.cpp_sources)
+        plugins = {plugin.rsplit("::", 1)[-1] for plugin in target.cpp_plugins}
+        found = [node for node in named if node.location.path in sources
+                 or (node.cls is not None and node.cls.rsplit("::", 1)[-1] in plugins)]
+        if found:
+            return found
+        linked = [node for node in named if node.location.path in set(target.cpp_linked)]
+        return linked if len({node.cls for node in linked}) == 1 else []
 
     def instance(self, launched: LaunchedNode, code: RosNode, analysed: bool = True) -> Instance:
         """``analysed``: false for a C++ node, whose names and parameters the analysis reads

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..graph.model import Diagnostic, Location, RosNode
-from .actions import Subst
+from .actions import Join, Subst, Text, Unknown
 from .param_files import Section
 
 #: A condition an action runs under: its expression, and whether it is negated.
@@ -79,6 +79,9 @@ class ExecutableRef:
     #: them, which tie it to the workspace's rclcpp nodes (:mod:`.instantiate`).
     cpp_sources: tuple[str, ...] = ()
     cpp_plugins: tuple[str, ...] = ()
+    #: The sources of the package libraries it links: where its node class lives when its own
+    #: sources only ``main`` (used when they hold one node class, so the tie is not a guess).
+    cpp_linked: tuple[str, ...] = ()
 
 
 @dataclass
@@ -112,8 +115,12 @@ class LaunchedNode:
 
     def excludes(self, other: "LaunchedNode") -> bool:
         """Whether this node and ``other`` (of the same launch) never both start: one runs
-        under a condition the other runs under negated."""
-        return any((expression, not negated) in other.guards for expression, negated in self.guards)
+        under a condition the other runs under negated, or under the same comparison with
+        ``==`` and ``!=`` swapped (``$(eval '"$(var m)" != ""')`` and ``… == ""``)."""
+        return any((expression, not negated) in other.guards
+                   or any(negated == theirs and _opposite_comparisons(expression, mine_other)
+                          for mine_other, theirs in other.guards)
+                   for expression, negated in self.guards)
 
     def is_unresolved(self, what: str) -> bool:
         return any(u.split(":", 1)[0] == what for u in self.unresolved)
@@ -165,3 +172,28 @@ class System:
     def complete(self) -> bool:
         """Whether every node was instantiated with every value known."""
         return not self.problems and all(not n.unresolved for n in self.nodes)
+
+
+def _opposite_comparisons(a: Subst, b: Subst) -> bool:
+    """Two unevaluated expressions alike but for one ``==`` that is ``!=`` in the other."""
+    parts_a, parts_b = _expression_parts(a), _expression_parts(b)
+    if parts_a is None or parts_b is None or len(parts_a) != len(parts_b):
+        return False
+    differing = [(x, y) for x, y in zip(parts_a, parts_b) if x != y]
+    return len(differing) == 1 and all(isinstance(p, Text) for p in differing[0]) and (
+        differing[0][0].text.replace("!=", "==") == differing[0][1].text
+        or differing[0][1].text.replace("!=", "==") == differing[0][0].text) and (
+        differing[0][0].text.count("!=") + differing[0][1].text.count("!=") == 1)
+
+
+def _expression_parts(expression: Subst) -> tuple | None:
+    """The parts of an unevaluated expression (``Unknown`` with a key), flattened."""
+    if not isinstance(expression, Unknown) or expression.key is None:
+        return None
+    return tuple(_flat(expression.key))
+
+
+def _flat(term: Subst) -> list[Subst]:
+    if isinstance(term, Join) and not term.sep:
+        return [part for inner in term.parts for part in _flat(inner)]
+    return [term]

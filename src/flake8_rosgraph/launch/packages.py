@@ -21,7 +21,7 @@ import ast
 import configparser
 import os
 import xml.parsers.expat
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..absint.folding import MAX_STR, safe_template, wide_template
@@ -46,6 +46,8 @@ class Executable:
     #: (``ns::Class``) it runs, as far as CMake names them literally.
     sources: tuple[str, ...] = ()
     plugins: tuple[str, ...] = ()
+    #: The source files of the package's libraries it links (``target_link_libraries``).
+    linked: tuple[str, ...] = ()
 
 
 @dataclass
@@ -305,6 +307,7 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
     complete = True
     project = next((args[0] for name, args in commands if name == "project" and args), project)
     libraries: dict[str, tuple[str, ...]] = {}
+    links: dict[str, list[str]] = {}
     for name, args in commands:
         if project is not None:
             args = [arg.replace("${PROJECT_NAME}", project) for arg in args]
@@ -319,6 +322,8 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
             continue
         if name == "add_library" and args:
             libraries[args[0]] = _source_files(args[1:], folder, root)
+        if name == "target_link_libraries" and len(args) > 1:
+            links.setdefault(args[0], []).extend(args[1:])
         built = _built_executable(name, args)
         if built is not None:
             if "$" in built:
@@ -349,6 +354,11 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
                 script = folder / item
                 package.executables.setdefault(Path(item).name, Executable(
                     Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
+    for target, linked in sorted(links.items()):
+        exe = package.executables.get(target)
+        found = sorted({source for library in linked for source in libraries.get(library, ())})
+        if exe is not None and exe.language == "cpp" and found:
+            package.executables[target] = replace(exe, linked=tuple(sorted(set(exe.linked) | set(found))))
     return complete
 
 

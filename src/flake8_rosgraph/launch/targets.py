@@ -43,7 +43,8 @@ class TargetIndex:
             status = "missing-executable" if found.complete else "unknown"
             return ExecutableRef(status, known=tuple(sorted(found.executables)))
         if exe.language == "cpp":
-            return ExecutableRef("no-python", cpp_sources=exe.sources, cpp_plugins=exe.plugins)
+            return ExecutableRef("no-python", cpp_sources=exe.sources, cpp_plugins=exe.plugins,
+                                 cpp_linked=exe.linked)
         if self.analysis is None:
             return ExecutableRef("no-python")
         return self.python_target(exe)

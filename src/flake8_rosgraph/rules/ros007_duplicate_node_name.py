@@ -117,7 +117,8 @@ class DuplicateNodeName(Rule):
             if site_a != site_b:
                 partners[site_a].setdefault(site_b, reason)
                 partners[site_b].setdefault(site_a, reason)
-            elif a.location != b.location and site_a != a.location:
+            elif a.location != b.location and site_a != a.location and a.language == b.language == "python":
+                # (the C++ front end's nodes are groups of partner ends, not each a creation)
                 renamed_together[site_a] |= {a.location, b.location}
         for site in sorted(renamed_together):
             created = sorted(renamed_together[site])
