@@ -140,6 +140,22 @@ def test_cmake_executables_under_other_names_are_known(tmp_path):
     assert package.complete is False  # ${TOOL_NAME}: the list may hold more
 
 
+def test_cmake_installed_scripts_take_their_rename(tmp_path):
+    """``install(PROGRAMS x.py DESTINATION lib/${PROJECT_NAME} RENAME x)`` installs the script
+    under the new name (tts_ros: 'tts_node.py' as 'tts_node'); without RENAME the file name."""
+    pkg = tmp_path / "voice"
+    (pkg / "voice").mkdir(parents=True)
+    (pkg / "voice" / "speak_node.py").write_text("import rclpy\n")
+    (pkg / "package.xml").write_text("<package><name>voice</name></package>")
+    (pkg / "CMakeLists.txt").write_text(
+        "project(voice)\n"
+        "install(PROGRAMS voice/speak_node.py DESTINATION lib/${PROJECT_NAME} RENAME speak_node)\n"
+        "install(PROGRAMS voice/speak_node.py DESTINATION lib/${PROJECT_NAME})\n")
+    package = find_packages(tmp_path).packages["voice"]
+    assert sorted(package.executables) == ["speak_node", "speak_node.py"]
+    assert package.executables["speak_node"].script == "voice/voice/speak_node.py"
+
+
 def test_cmake_subdirectories_add_their_executables(tmp_path):
     """``add_subdirectory`` is followed (moveit2_tutorials builds every example in its own folder):
     its targets are the package's, with the package's PROJECT_NAME; a folder named by a variable,

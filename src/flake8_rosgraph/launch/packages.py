@@ -347,13 +347,17 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
             at = args.index("DESTINATION")
             if args[at + 1:at + 2] not in (["lib/${PROJECT_NAME}"], [f"lib/{project}"]):
                 continue
-            for item in args[1:at]:
-                if "$" in item:
+            items = args[1:at]
+            # ``RENAME name`` installs the one file under another name (``tts_node.py`` as ``tts_node``).
+            rename = args[args.index("RENAME") + 1] if "RENAME" in args[at:-1] and len(items) == 1 else None
+            for item in items:
+                if "$" in item or (rename is not None and "$" in rename):
                     complete = False
                     continue
                 script = folder / item
-                package.executables.setdefault(Path(item).name, Executable(
-                    Path(item).name, script=_rel(script, root) if is_regular_file(script) else None))
+                installed = rename or Path(item).name
+                package.executables.setdefault(installed, Executable(
+                    installed, script=_rel(script, root) if is_regular_file(script) else None))
     for target, linked in sorted(links.items()):
         exe = package.executables.get(target)
         found = sorted({source for library in linked for source in libraries.get(library, ())})
