@@ -321,3 +321,14 @@ def test_names_joined_from_parameters_follow_the_launch_values(tmp_path: Path):
         15: {("/car1/odometry", None)}, 17: {("/car1/front_scan", None)}}
     # Only the namespace set: the odometry topic keeps its default, the scan topic has none.
     assert launched(graph, "half.launch.py")["/bridge"] == {15: {("/car2/odom", None)}, 17: {(None, None)}}
+
+
+def test_a_setting_the_analysis_cannot_read_is_named_in_a_diagnostic(tmp_path: Path):
+    graph = build_graph(write(tmp_path, LAUNCHED))
+    system = next(s for s in graph.systems if s.launch_file.endswith("conflict.launch.py"))
+    notes = sorted((d.line, d.message) for d in system.problems if "names the entity" in d.message)
+    assert [line for line, _ in notes] == [8, 10]  # the driver's two settings, the monitor's argument
+    assert notes[1][1].startswith("parameter 'scan_topic' of node '/monitor' names the entity at "
+                                  "safety/safety/monitor.py:12, but its value here is not known")
+    front = next(s for s in graph.systems if s.launch_file.endswith("front.launch.py"))
+    assert not [d for d in front.problems if "names the entity" in d.message]  # every value read

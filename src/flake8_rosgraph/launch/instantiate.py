@@ -120,6 +120,8 @@ class Instantiator:
                 for code in by_location.get(site, ()):
                     if (site, code.cls) in classes:
                         system.instances.append(self.instance(launched, code))
+        system.problems.extend(sorted({problem for instance in system.instances
+                                       for problem in _unread_names(instance.node)}))
 
     def cpp_nodes(self, graph: RosGraph, target: ExecutableRef) -> list[RosNode]:
         """The rclcpp nodes a C++ executable runs: those created in its source files (as CMake
@@ -259,6 +261,23 @@ def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Lo
         if key not in seen:
             seen.add(key)
             out.append(renamed)
+    return out
+
+
+def _unread_names(node: RosNode) -> list[Diagnostic]:
+    """Where the launch sets a parameter that names an entity to a value the analysis cannot
+    read (a launch argument, settings that disagree, a part it does not set without a
+    default): the name is unknown, and the setting is named."""
+    out = []
+    for entity in node.entities:
+        if entity.name_set_at is not None and entity.raw_name is None:
+            which = ", ".join(f"'{p}'" for p in entity.name_parameters)
+            out.append(Diagnostic(
+                entity.name_set_at.path, entity.name_set_at.line,
+                f"parameter {which} of node '{node.fqn or node.name or '?'}' names the entity at "
+                f"{entity.location.short()}, but its value here is not known statically (a launch "
+                "argument, settings that disagree, or a part without a default): the name is unknown",
+                "info"))
     return out
 
 
