@@ -140,7 +140,8 @@ class Instantiator:
                  or (node.cls is not None and node.cls.rsplit("::", 1)[-1] in plugins)]
         if found:
             return found
-        linked = [node for node in named if node.location.path in set(target.cpp_linked)]
+        linked_sources = set(target.cpp_linked)
+        linked = [node for node in named if node.location.path in linked_sources]
         return linked if len({node.cls for node in linked}) == 1 else []
 
     def instance(self, launched: LaunchedNode, code: RosNode, analysed: bool = True) -> Instance:
@@ -149,7 +150,7 @@ class Instantiator:
         apply, but nothing is judged "unused" on it."""
         name, namespace = _node_name(launched, code), _namespace(launched, code)
         rules = [names.RemapRule(r.source, r.target) for r in launched.remaps]
-        fqn = RosNode(name, namespace, code.location).fqn
+        fqn = None if name is None or namespace is None else names.fqn(name, namespace)
         settings = self.settings(launched, fqn)
         values = _set_values(settings)
         hits: set[int] = set()
@@ -221,19 +222,15 @@ class Instantiator:
         return out
 
 
-#: A parameter that the launch sets to different values (or to one the analysis cannot read).
-_UNKNOWN_SETTING = object()
-
-
 def _set_values(settings: list[tuple[str, Any, Location, str]]) -> dict[str, tuple[Any, Location]]:
     """Each parameter the launch sets, with its value and where it is first set: the one
-    value every setting of it agrees on, else :data:`_UNKNOWN_SETTING` — which of several
-    settings wins depends on how launch orders sources, and a guessed name is worse than an
-    unknown one."""
+    value every setting of it agrees on, else ``None`` like a value the analysis cannot read
+    — which of several settings wins depends on how launch orders sources, and a guessed
+    name is worse than an unknown one."""
     out: dict[str, tuple[Any, Location]] = {}
     for name, value, location, _origin in settings:
         if name in out and out[name][0] != value:
-            out[name] = (_UNKNOWN_SETTING, out[name][1])
+            out[name] = (None, out[name][1])
         else:
             out.setdefault(name, (value, location))
     return out
