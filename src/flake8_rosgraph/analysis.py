@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import gc
+import json
 import traceback
 from importlib.resources import files
 from pathlib import Path
@@ -17,10 +18,12 @@ from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
 from .escaping import escape_text
-from .graph.builder import build_graph_from
 from .graph.model import Diagnostic, RosGraph, RosNode
 from .interfaces.catalogue import generated_class_identity
+from .launch.packages import PackageIndex, find_packages
+from .launch.targets import entry_key, runs_module
 from .options import Buffers
+from .python_facts import PythonFacts, facts_of, merged
 from .registrations import registered_classes
 from .safe_io import read_text
 from .workspace import load_workspace
@@ -49,14 +52,15 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     return library, diagnostics
 
 
-def _launch_systems(root: Path, graph: RosGraph, analysis: Analysis,
+def _launch_systems(root: Path, graph: RosGraph, python: PythonFacts, packages: PackageIndex,
                     diagnostics: list[Diagnostic]) -> list:
     """The workspace's launch systems; a failure here must not cost the code-level graph."""
     from .launch.api import systems_for
     try:
         if not root.is_dir():  # one file given: its Python launch description, nothing around it walked
-            return systems_for(root.parent, graph, analysis, diagnostics, walk=False)
-        return systems_for(root, graph, analysis, diagnostics)
+            return systems_for(root.parent, graph, python.launches, python.targets, diagnostics,
+                               walk=False, packages=packages)
+        return systems_for(root, graph, python.launches, python.targets, diagnostics, packages=packages)
     except Exception as exc:
         diagnostics.append(Diagnostic("", 0, f"launch files not analysed: internal error: "
                                               f"{type(exc).__name__}: {exc}", "error"))
@@ -81,19 +85,30 @@ def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo:
 
 
 def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
-                analysis: Analysis, diagnostics: list[Diagnostic]) -> None:
-    """Message facts and interface definitions for the message rules; a failure here must not
-    cost the graph."""
-    from .graph.messages import message_facts
+                diagnostics: list[Diagnostic]) -> None:
+    """Interface definitions for the message rules; a failure here must not cost the graph."""
     from .interfaces.catalogue import load_catalogue
     try:
-        graph.messages = message_facts(analysis)
         graph.interfaces = load_catalogue(root if root.is_dir() else None, interface_dirs)
         diagnostics.extend(Diagnostic(path, 1, why) for path, why in graph.interfaces.problems)
     except Exception as exc:
-        graph.messages = graph.interfaces = None
-        diagnostics.append(Diagnostic("", 0, f"message facts not gathered: internal error: "
+        graph.interfaces = None
+        diagnostics.append(Diagnostic("", 0, f"interface definitions not read: internal error: "
                                               f"{type(exc).__name__}: {exc}", "error"))
+
+
+def _packages(root: Path, diagnostics: list[Diagnostic]) -> PackageIndex:
+    """The workspace's packages (none around a single file); a failure costs the packages only."""
+    if not root.is_dir():
+        return PackageIndex()
+    try:
+        packages = find_packages(root)
+    except Exception as exc:
+        diagnostics.append(Diagnostic("", 0, f"packages not read: internal error: "
+                                              f"{type(exc).__name__}: {exc}", "error"))
+        return PackageIndex()
+    diagnostics.extend(packages.diagnostics)
+    return packages
 
 
 @contextlib.contextmanager
@@ -115,27 +130,73 @@ def collector_paused():
 
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
                 interface_dirs: Sequence[Path] = (), buffers: Buffers = (),
-                cpp_memo: CppMemo | None = None) -> RosGraph:
+                cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
-    ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``: where the
-    C++ ends of an unchanged C++ tree are kept between runs (the cache)."""
+    ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``, ``facts_memo``:
+    where the C++ ends of an unchanged C++ tree and the facts of unchanged groups of Python
+    modules are kept between runs (the cache)."""
     with collector_paused():
-        return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo)[0]
+        return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo, facts_memo)
 
 
 def analyse(root: Path, stub_files: Sequence[Path] = (),
-            interface_dirs: Sequence[Path] = ()) -> tuple[RosGraph, Analysis | None]:
-    """The graph and the analysis it was built from (``None`` after an internal error), for
-    callers that explain the graph (``graph --explain``); never raises."""
+            interface_dirs: Sequence[Path] = ()) -> tuple[RosGraph, list[Analysis]]:
+    """The graph and the analyses it was built from, one per group of modules (none after an
+    internal error), for callers that explain the graph (``graph --explain``); never raises."""
+    analyses: list[Analysis] = []
     with collector_paused():
-        return _build_graph(Path(root), stub_files, interface_dirs, ())
+        graph = _build_graph(Path(root), stub_files, interface_dirs, (), kept=analyses)
+    return graph, analyses
+
+
+#: Keeps the facts of a group of modules between runs: given what identifies the group's inputs
+#: and how to compute its facts, returns them (stored or computed, then stored).
+FactsMemo = Callable[[str, Callable[[], PythonFacts]], PythonFacts]
+
+
+def _group_facts(program: Program, library: LibraryModel, registered: frozenset[str],
+                 packages: PackageIndex, memo: FactsMemo | None,
+                 kept: list[Analysis] | None) -> PythonFacts:
+    """The facts of one group of modules (``program``), analysed on its own or kept from before;
+    an internal error costs this group's facts only."""
+    paths = {m.path for m in program.modules.values()}
+    executables = sorted((exe for package in packages.packages.values()
+                          for exe in package.executables.values()
+                          if exe.language == "python" and runs_module(exe, program.modules, paths)),
+                         key=entry_key)
+    framework = frozenset(c for c in registered if c.rpartition(".")[0] in program.modules)
+
+    def compute() -> PythonFacts:
+        analysis = Analysis(program, library, framework_classes=framework)
+        analysis.run()
+        facts = facts_of(analysis, executables)
+        if kept is not None:
+            kept.append(analysis)
+        else:
+            analysis.close()  # frees the analysis by reference counting, not a later collection
+        return facts
+
+    try:
+        if memo is None:
+            return compute()
+        inputs = json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
+                              for m in program.modules.values()],
+                             sorted(framework), [entry_key(exe) for exe in executables]])
+        return memo(inputs, compute)
+    except Exception as exc:
+        first = min(paths, default="")
+        where = traceback.extract_tb(exc.__traceback__)[-1]
+        return PythonFacts(diagnostics=[Diagnostic(
+            first, 1, f"modules analysed with this one not analysed: internal error: "
+                      f"{type(exc).__name__}: {exc} (at {Path(where.filename).name}:{where.lineno})",
+            "error")])
 
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
-                 buffers: Buffers, cpp_memo: CppMemo | None = None) -> tuple[RosGraph, Analysis | None]:
-    analysis: Analysis | None = None
+                 buffers: Buffers, cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None,
+                 kept: list[Analysis] | None = None) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -145,25 +206,23 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         program = Program(workspace.modules)
         registered, registry_diags = registered_classes(root) if root.is_dir() else (frozenset(), [])
         diagnostics.extend(registry_diags)
-        analysis = Analysis(program, library, framework_classes=registered)
-        analysis.run()
-        diagnostics.extend(Diagnostic(m.path, 1, why) for m, why in program.rejected)
-        diagnostics.extend(Diagnostic(d.path, d.line, d.message, d.severity)
-                           for d in analysis.diagnostics)
-        graph = build_graph_from(analysis)
-        diagnostics.extend(graph.diagnostics)
+        packages = _packages(root, diagnostics)
+        python = merged([_group_facts(program.part(names), library, registered, packages, facts_memo, kept)
+                         for names in program.components()])
+        diagnostics.extend(python.diagnostics)
+        graph = RosGraph(nodes=python.nodes, usage=python.usage, messages=python.messages)
         _cpp_nodes(root, graph, diagnostics, cpp_memo)
-        graph.systems = _launch_systems(root, graph, analysis, diagnostics)
-        _interfaces(root, interface_dirs, graph, analysis, diagnostics)
-        analysis.close()  # frees the analysis by reference counting, not a later collection
+        graph.systems = _launch_systems(root, graph, python, packages, diagnostics)
+        _interfaces(root, interface_dirs, graph, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "
                                               f"(at {Path(where.filename).name}:{where.lineno})",
                                       "error"))
         graph = RosGraph()
-        analysis = None
+        if kept is not None:
+            kept.clear()
     # Paths and messages quote the analysed workspace: escaped, so that they print safely.
     graph.diagnostics = sorted({Diagnostic(escape_text(d.path), d.line, escape_text(d.message), d.severity)
                                 for d in diagnostics})
-    return graph, analysis
+    return graph

@@ -577,15 +577,17 @@ else:
 # -- the analysis ----------------------------------------------------------------------------
 
 def build_report(root: Path, settings: Settings, buffers: Buffers = (),
-                 cpp_ends: Callable | None = None) -> WorkspaceReport:
+                 cpp_ends: Callable | None = None, groups: Callable | None = None) -> WorkspaceReport:
     """Analyse ``root`` and run every rule, uncached but for the C++ ends (``cpp_ends``, see
-    :func:`_cpp_memo`); imports the heavy parts only when needed."""
+    :func:`_cpp_memo`) and the facts of groups of Python modules (``groups``, see
+    :mod:`.facts_cache`); imports the heavy parts only when needed."""
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
     from .launch.api import judged_graph
 
-    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers, cpp_ends)
+    graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers, cpp_ends,
+                        groups)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
@@ -628,12 +630,33 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
             cached = _read_entry(entry, root, key, secret)
             if cached is not None:
                 return cached
-        report = build_report(root, settings, cpp_ends=cpp_ends)
+        from . import facts_cache
+        folder = facts_cache.groups_dir(cache_dir) if _own_dir(cache_dir) else None
+        groups = None if folder is None else \
+            facts_cache.facts_memo(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
+        report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups)
         if locked:
             with contextlib.suppress(OSError):
                 _write_entry(entry, report, key, secret)
                 _prune(entry.parent)
+            if folder is not None:
+                facts_cache.prune(folder)
         return report
+
+
+def _unsaved_report(root: Path, settings: Settings, buffers: Buffers) -> WorkspaceReport:
+    """The report with an editor's unsaved ``buffers``: never stored, but the groups of modules
+    the buffers do not touch are read from the cache when it has them."""
+    from . import facts_cache
+    secret = machine_secret()
+    cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
+    folder = Path(os.path.abspath(cache_dir)) / facts_cache.GROUPS_DIR \
+        if secret is not None and cache_dir is not None else None
+    if folder is None or not folder.is_dir() or folder.is_symlink():
+        return build_report(root, settings, buffers)
+    context = facts_cache.context_key(tuple(settings.stub_files))
+    return build_report(root, settings, buffers,
+                        groups=facts_cache.facts_memo(folder, secret, context, store=False))
 
 
 #: Per-process results, so that the many files of one run share one lookup.
@@ -648,7 +671,7 @@ def workspace_report(root: Path, settings: Settings, buffers: Buffers = ()) -> W
     """
     memo_key = (Path(os.path.abspath(root)), settings, buffers)
     if memo_key not in _MEMO:
-        _MEMO[memo_key] = (build_report(memo_key[0], settings, buffers) if buffers
+        _MEMO[memo_key] = (_unsaved_report(memo_key[0], settings, buffers) if buffers
                            else load_or_build(memo_key[0], settings))
     return _MEMO[memo_key]
 

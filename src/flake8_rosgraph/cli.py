@@ -29,21 +29,23 @@ def _graph(args: argparse.Namespace) -> int:
 
 
 def _print_graph(args: argparse.Namespace) -> int:
-    from .analysis import analyse
+    from .analysis import analyse, build_graph
     from .launch.api import graph_to_json_obj, system_to_json
 
     root = Path(args.path)
     if not root.exists():
         print(f"flake8-rosgraph: error: no such file or directory: {args.path}", file=sys.stderr)
         return 2
-    graph, analysis = analyse(root, [Path(s) for s in args.stubs])
+    stubs = [Path(s) for s in args.stubs]
+    # Only --explain reads the analyses themselves: otherwise each is freed once its facts are read.
+    graph, analyses = analyse(root, stubs) if args.explain else (build_graph(root, stubs), [])
     for diag in graph.diagnostics:
         if diag.severity == "info" and not args.verbose:
             continue  # kept in the JSON; stderr shows what may change the graph
         where = f"{diag.path}:{diag.line}: " if diag.path else ""
         print(escape_text(f"{where}{diag.severity}: {diag.message}"), file=sys.stderr)
     if args.explain:
-        _explain_gaps(graph, analysis, args.verbose)
+        _explain_gaps(graph, analyses, args.verbose)
     system = None
     if args.launch:
         system = _find_system(graph, root, Path(args.launch))
@@ -87,14 +89,14 @@ def _print_graph(args: argparse.Namespace) -> int:
     return 0
 
 
-def _explain_gaps(graph, analysis, verbose: bool) -> None:
+def _explain_gaps(graph, analyses, verbose: bool) -> None:
     """Creation sites missing from the graph or known only partly, one line each (stderr)."""
     from .explain import explain
-    if analysis is None:
+    if not analyses:
         print("flake8-rosgraph: --explain: the analysis did not complete; nothing to explain",
               file=sys.stderr)
         return
-    report = explain(analysis, graph)
+    report = explain(analyses, graph)
     for item in report.gaps():
         print(item.line(), file=sys.stderr)
     if verbose:

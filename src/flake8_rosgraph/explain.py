@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass
-from typing import Iterable
+from typing import Iterable, Sequence
 
 from .absint.engine import Analysis, Effect
 from .absint.library import FunctionModel, LibraryModel
@@ -108,9 +108,11 @@ def creation_callables(library: LibraryModel) -> _Callables:
     return _Callables(frozenset(methods), frozenset(qualnames | ctors), frozenset(ctors))
 
 
-def explain(analysis: Analysis, graph: RosGraph) -> Report:
-    """Every creation site of the analysed workspace with its status and reasons."""
-    return _Explainer(analysis, graph).run()
+def explain(analyses: Sequence[Analysis], graph: RosGraph) -> Report:
+    """Every creation site of the analysed workspace with its status and reasons: each group of
+    modules (see :meth:`.Program.components`) explained from its own analysis."""
+    return Report(tuple(sorted({item for analysis in analyses
+                                for item in _Explainer(analysis, graph).run().explanations})))
 
 
 class _Explainer:

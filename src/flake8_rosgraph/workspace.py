@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import functools
+import hashlib
 import io
 import os
 import re
@@ -258,7 +259,7 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None,
         number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
     first = text.split("\n", 1)[0]
     program = first.startswith("#!") and "python" in first
-    return Module(name, rel, tree, wide, is_package, program)
+    return Module(name, rel, tree, wide, is_package, program, digest=hashlib.sha256(data).hexdigest())
 
 
 def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:

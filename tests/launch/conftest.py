@@ -12,6 +12,8 @@ from flake8_rosgraph.analysis import load_stubs
 from flake8_rosgraph.graph.builder import build_graph_from
 from flake8_rosgraph.graph.model import RosGraph
 from flake8_rosgraph.launch.api import System, systems_for
+from flake8_rosgraph.launch.packages import find_packages
+from flake8_rosgraph.python_facts import PythonFacts, facts_of
 from flake8_rosgraph.workspace import load_workspace
 
 WS = Path(__file__).parent / "ws"
@@ -20,7 +22,7 @@ WS = Path(__file__).parent / "ws"
 @dataclass
 class Analysed:
     root: Path
-    analysis: Analysis
+    python: PythonFacts
     graph: RosGraph
     systems: list[System]
 
@@ -33,8 +35,10 @@ def analyse(root: Path) -> Analysed:
     assert diagnostics == []
     analysis = Analysis(Program(load_workspace(root).modules), library)
     analysis.run()
+    python = facts_of(analysis, [exe for package in find_packages(root).packages.values()
+                                 for exe in package.executables.values() if exe.language == "python"])
     graph = build_graph_from(analysis)
-    return Analysed(root, analysis, graph, systems_for(root, graph, analysis))
+    return Analysed(root, python, graph, systems_for(root, graph, python.launches, python.targets))
 
 
 @pytest.fixture(scope="session")

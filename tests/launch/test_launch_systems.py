@@ -79,7 +79,7 @@ def test_remap_that_fixes_a_connection(ws):
 def test_unresolvable_parts_are_reported_not_guessed(ws):
     # Not named like a launch file, so only read when asked for (``graph --launch FILE``).
     assert not any(s.launch_file.endswith("partial.xml") for s in ws.systems)
-    system = system_for_file(ws.root, ws.graph, ws.analysis, ws.root / "src/demo_bringup/extra/partial.xml")
+    system = system_for_file(ws.root, ws.graph, ws.python.launches, ws.python.targets, ws.root / "src/demo_bringup/extra/partial.xml")
     assert [(d.line, d.message) for d in system.problems] == [
         (2, "include not resolved: package 'nav2_bringup' is not in the workspace"),
         (4, "<executable> is not followed: nodes it starts are not in the system"),

@@ -27,6 +27,8 @@ class Module:
     program: bool = False
     cfg: CFG | None = None
     globals: frozenset[str] = frozenset()
+    #: A hash of the source bytes: what a cache of results computed from this module keys on.
+    digest: str = ""
 
     def column(self, node: ast.AST) -> int:
         """1-based character column of ``node`` (ast's ``col_offset`` counts UTF-8 bytes)."""
@@ -120,20 +122,8 @@ class Program:
         self.modules: dict[str, Module] = {}
         for mod in sorted(modules, key=lambda m: m.path):
             self.modules.setdefault(mod.name, mod)
-        self.functions: list[Function] = []
-        self.classes: list[Class] = []
-        self.fid_of: dict[int, int] = {}     # id(ast node) -> fid
-        self.cid_of: dict[int, int] = {}     # id(ast node) -> cid
         self.imports: dict[str, frozenset[str]] = {}  # module -> absolute names it imports
-        #: Attribute names some workspace code assigns (``x.name = …``): any other attribute
-        #: of an object with library bases can only come from the library.
-        self.stored_attrs: set[str] = set()
-        #: Names and attribute names some workspace code reads (``run``, ``helpers.run``):
-        #: a module function named so may be called by code that is analysed later.
-        self.read_names: set[str] = set()
-        self.rejected: list[tuple[Module, str]] = []
-        self._collected: set[str] = set()
-        self._star_memo: dict[str, frozenset[str]] = {}
+        self._fresh_tables()
         #: (folder, name) -> the module importable as ``name`` from a file in ``folder`` when
         #: that folder is on ``sys.path`` (``name.py`` or ``name/__init__.py`` in it).
         self._in_folder: dict[tuple[str, str], str] = {}
@@ -153,6 +143,54 @@ class Program:
                 self._tops.add(mod.name.partition(".")[0])
         for mod in self.modules.values():
             self.imports[mod.name] = _statement_imports(self, mod)
+
+    def components(self) -> list[tuple[str, ...]]:
+        """The workspace's modules in groups that import nothing from one another, each sorted,
+        in order of their first module.
+
+        Two modules are in one group when one imports the other, or a package the other's import
+        runs (``import a.b.c`` runs ``a`` and ``a.b``), directly or through others. The analysis
+        of a group reads nothing of another: no global, class, function or object crosses
+        between them, so each can be analysed — and its results kept — on its own.
+        """
+        import networkx as nx
+        graph = nx.Graph()
+        graph.add_nodes_from(self.modules)
+        for name, imported in self.imports.items():
+            for dotted in imported:
+                parts = dotted.split(".")
+                for end in range(1, len(parts) + 1):
+                    other = ".".join(parts[:end])
+                    if other != name and other in self.modules:
+                        graph.add_edge(name, other)
+        return sorted(tuple(sorted(group)) for group in nx.connected_components(graph))
+
+    def part(self, names: tuple[str, ...]) -> Program:
+        """A program of the modules ``names`` only (a group of :meth:`components`), resolving
+        imports as this one does: its functions and classes are numbered afresh, so what is
+        analysed from it depends on those modules alone."""
+        part = Program.__new__(Program)
+        part.modules = {name: self.modules[name] for name in names}
+        part.imports = {name: self.imports[name] for name in names}
+        part._in_folder, part._tops = self._in_folder, self._tops
+        part._fresh_tables()
+        return part
+
+    def _fresh_tables(self) -> None:
+        """The tables filled as modules are walked (:meth:`ensure`), empty."""
+        self.functions: list[Function] = []
+        self.classes: list[Class] = []
+        self.fid_of: dict[int, int] = {}     # id(ast node) -> fid
+        self.cid_of: dict[int, int] = {}     # id(ast node) -> cid
+        #: Attribute names some workspace code assigns (``x.name = …``): any other attribute
+        #: of an object with library bases can only come from the library.
+        self.stored_attrs: set[str] = set()
+        #: Names and attribute names some workspace code reads (``run``, ``helpers.run``):
+        #: a module function named so may be called by code that is analysed later.
+        self.read_names: set[str] = set()
+        self.rejected: list[tuple[Module, str]] = []
+        self._collected: set[str] = set()
+        self._star_memo: dict[str, frozenset[str]] = {}
 
     def ensure(self, name: str) -> Module | None:
         """The module, its functions and classes numbered and its scopes gathered (done on

@@ -77,7 +77,9 @@ class Callback:
     signature: Signature | None
     #: Some run ends without returning a value (``return``/``return None``/the end of the body).
     may_return_none: bool
-    fid: int = field(compare=False)
+    #: The analysis's handles on the function and its receiver, for building the other facts;
+    #: not facts themselves (not compared, not kept by the cache: -1 and ``None`` there).
+    fid: int = field(compare=False, default=-1)
     receiver: object = field(compare=False, default=None)
 
 
@@ -208,7 +210,7 @@ class UsageBuilder:
 
     def build(self) -> UsageFacts:
         facts = UsageFacts()
-        facts.callbacks = sorted(self._callbacks(), key=_callback_order)
+        facts.callbacks = sorted(self._callbacks(), key=callback_order)
         in_callbacks = self._reached(t for cb in facts.callbacks if cb.on_executor
                                      for t in self._tasks(cb.fid, cb.receiver))
         # In task order: distinct tasks never render alike, so ordering the (task, effects) pairs
@@ -686,7 +688,7 @@ def _counts(value: Value) -> tuple[int, ...] | None:
     return None
 
 
-def _callback_order(cb: Callback) -> tuple:
+def callback_order(cb: Callback) -> tuple:
     return (cb.registration, cb.function, cb.role)
 
 

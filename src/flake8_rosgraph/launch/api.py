@@ -12,38 +12,40 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Mapping
 
-from ..absint.engine import Analysis
 from ..graph.json_out import to_json_obj
 from ..graph.model import Diagnostic, RosGraph
-from .discover import LaunchReader, frontend_launch_files, python_launch_files
+from .discover import LaunchReader, PythonLaunches, frontend_launch_files
 from .execute import Executor
 from .instantiate import Instantiator, apply_systems
-from .model import LaunchedNode, System
+from .model import ExecutableRef, LaunchedNode, System
 from .packages import PackageIndex, find_packages
 from .targets import TargetIndex
 
 
-def systems_for(root: Path, graph: RosGraph, analysis: Analysis | None,
-                diagnostics: list[Diagnostic] | None = None, walk: bool = True) -> list[System]:
+def systems_for(root: Path, graph: RosGraph, python: PythonLaunches | None,
+                targets: Mapping[str, ExecutableRef] | None,
+                diagnostics: list[Diagnostic] | None = None, walk: bool = True,
+                packages: PackageIndex | None = None) -> list[System]:
     """Every launch system under ``root``, one per launch file, in path order.
 
-    Each system is executed and instantiated on its own: a failure in one is a
-    problem of that system, never the loss of the others.  Files, folders and
-    packages that cannot be read are added to ``diagnostics``.  Without
-    ``walk`` (a single file analysed) only the analysed Python launch files
-    count: no folder around them is searched for packages or launch files.
+    ``python``: what the analysis read of each Python launch file, ``targets``: where each
+    Python executable leads (both ``None`` when the Python code was not analysed);
+    ``packages``: the workspace's packages, when already found.  Each system is executed and
+    instantiated on its own: a failure in one is a problem of that system, never the loss of
+    the others.  Files, folders and packages that cannot be read are added to
+    ``diagnostics``.  Without ``walk`` (a single file analysed) only the analysed Python
+    launch files count: no folder around them is searched for packages or launch files.
     """
     root = Path(root)
     diagnostics = [] if diagnostics is None else diagnostics
-    packages = find_packages(root) if walk else PackageIndex()
-    diagnostics.extend(packages.diagnostics)
-    targets = TargetIndex(analysis, packages)
-    reader = LaunchReader(root, analysis)
-    executor = Executor(root, packages, reader, targets.resolve)
+    if packages is None:
+        packages = find_packages(root) if walk else PackageIndex()
+        diagnostics.extend(packages.diagnostics)
+    executor = Executor(root, packages, LaunchReader(root, python), TargetIndex(targets, packages).resolve)
     frontend = frontend_launch_files(root, diagnostics) if walk else []
-    files = sorted(set(python_launch_files(analysis)) | set(frontend))
+    files = sorted(set(python or ()) | set(frontend))
     binder = Instantiator(root)
     systems = [_bound(binder, graph, _isolated(lambda: executor.system(path), path)) for path in files]
     for system in systems:
@@ -77,12 +79,13 @@ def _bound(binder: Instantiator, graph: RosGraph, system: System) -> System:
         return failed
 
 
-def system_for_file(root: Path, graph: RosGraph, analysis: Analysis | None, launch_file: Path) -> System:
+def system_for_file(root: Path, graph: RosGraph, python: PythonLaunches | None,
+                    targets: Mapping[str, ExecutableRef] | None, launch_file: Path) -> System:
     """The system of one launch file (``graph --launch FILE``)."""
     root = Path(root)
     path = Path(launch_file).resolve().relative_to(root.resolve()).as_posix()
     packages = find_packages(root)
-    executor = Executor(root, packages, LaunchReader(root, analysis), TargetIndex(analysis, packages).resolve)
+    executor = Executor(root, packages, LaunchReader(root, python), TargetIndex(targets, packages).resolve)
     system = _bound(Instantiator(root), graph, _isolated(lambda: executor.system(path), path))
     system.problems = sorted(set(system.problems))
     return system

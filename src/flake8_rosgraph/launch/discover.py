@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import xml.parsers.expat
 from pathlib import Path
+from typing import Mapping
 
 from ..absint.engine import Analysis
 from ..graph.model import Diagnostic
@@ -78,12 +79,29 @@ def frontend_launch_files(root: Path, diagnostics: list[Diagnostic] | None = Non
     return sorted(found)
 
 
-class LaunchReader:
-    """Reads any launch file by extension, once."""
+#: A Python launch file's actions (or why there are none), by root-relative path.
+PythonLaunches = Mapping[str, tuple[list[Action], "str | None"]]
 
-    def __init__(self, root: Path, analysis: Analysis | None) -> None:
+
+def read_python_launches(analysis: Analysis) -> dict[str, tuple[list[Action], str | None]]:
+    """The actions of every Python launch file of ``analysis``, read while its heap is there.
+    One file that cannot be read costs that file only."""
+    out = {}
+    for path in python_launch_files(analysis):
+        try:
+            out[path] = read_python_launch(analysis, path)
+        except Exception as exc:
+            out[path] = [], f"internal error: {type(exc).__name__}: {exc}"[:300]
+    return out
+
+
+class LaunchReader:
+    """Reads any launch file by extension, once; Python ones from ``python``, what the analysis
+    read of them (``None``: the Python code was not analysed)."""
+
+    def __init__(self, root: Path, python: PythonLaunches | None) -> None:
         self.root = Path(root)
-        self.analysis = analysis
+        self.python = python
         self._cache: dict[str, tuple[list[Action], str | None]] = {}
 
     def __call__(self, path: str) -> tuple[list[Action], str | None]:
@@ -93,9 +111,9 @@ class LaunchReader:
 
     def _read(self, path: str) -> tuple[list[Action], str | None]:
         if path.endswith(".py"):
-            if self.analysis is None:
+            if self.python is None:
                 return [], "Python launch files need the analysis"
-            return read_python_launch(self.analysis, path)
+            return self.python.get(path) or ([], f"no {ENTRY_FUNCTION}() function")
         try:
             text = read_text(self.root / path, self.root)
         except (OSError, UnicodeDecodeError) as exc:

@@ -6,10 +6,15 @@ effects of every task reachable from there.  Calls are read off the engine's
 dependency record: a task that read the return summary ``("ret", t)`` called
 ``t``, and one that read a module global ``("g", m, …)`` imported ``m``
 (whose top level ran).
+
+Where each Python executable leads is read from the analysis of the modules it runs
+(:class:`EntryReach`, kept with that group's facts); :class:`TargetIndex` answers
+launch files from those answers, whichever group each came from.
 """
 from __future__ import annotations
 
 from collections import deque
+from typing import Mapping
 
 from ..absint.engine import Analysis
 from ..absint.values import Obj
@@ -19,18 +24,32 @@ from .model import ExecutableRef
 from .packages import Executable, PackageIndex
 
 
+def entry_key(exe: Executable) -> str:
+    """What a Python executable runs, as a key of :attr:`TargetIndex.python` (``module:function``
+    of an entry point, ``script:PATH`` of an installed script)."""
+    return f"{exe.module}:{exe.function or ''}" if exe.module is not None else f"script:{exe.script}"
+
+
+def _entry_text(exe: Executable) -> str | None:
+    """``module:function`` (or the script) the executable runs, for the JSON output."""
+    if exe.module is not None:
+        return f"{exe.module}:{exe.function}" if exe.function else exe.module
+    return exe.script
+
+
+def runs_module(exe: Executable, names: Mapping[str, object], paths: set[str]) -> bool:
+    """Whether ``exe`` runs one of the modules ``names`` (files ``paths``)."""
+    return exe.module in names if exe.module is not None else exe.script in paths
+
+
 class TargetIndex:
-    def __init__(self, analysis: Analysis | None, packages: PackageIndex) -> None:
-        self.analysis = analysis
+    """Resolves launch files' ``package`` + ``executable`` against the workspace's packages and
+    ``python``, where each Python executable leads (by :func:`entry_key`; ``None``: the Python
+    code was not analysed)."""
+
+    def __init__(self, python: Mapping[str, ExecutableRef] | None, packages: PackageIndex) -> None:
+        self.python = python
         self.packages = packages
-        self.callees: dict[tuple, set[tuple]] = {}
-        if analysis is not None:
-            for key, readers in analysis.readers.items():
-                callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
-                if callee is None:
-                    continue
-                for caller in readers:
-                    self.callees.setdefault(caller, set()).add(callee)
 
     def resolve(self, package: str | None, executable: str | None) -> ExecutableRef:
         if package is None or executable is None:
@@ -45,18 +64,31 @@ class TargetIndex:
         if exe.language == "cpp":
             return ExecutableRef("no-python", cpp_sources=exe.sources, cpp_plugins=exe.plugins,
                                  cpp_linked=exe.linked)
-        if self.analysis is None:
+        if self.python is None:
             return ExecutableRef("no-python")
-        return self.python_target(exe)
+        return self.python.get(entry_key(exe)) or ExecutableRef("no-python", entry=_entry_text(exe))
+
+
+class EntryReach:
+    """The nodes each Python executable of one analysis creates."""
+
+    def __init__(self, analysis: Analysis) -> None:
+        self.analysis = analysis
+        self.callees: dict[tuple, set[tuple]] = {}
+        for key, readers in analysis.readers.items():
+            callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
+            if callee is None:
+                continue
+            for caller in readers:
+                self.callees.setdefault(caller, set()).add(callee)
 
     def python_target(self, exe: Executable) -> ExecutableRef:
         program = self.analysis.program
+        entry = _entry_text(exe)
         if exe.module is not None:
             modules = [program.modules[exe.module]] if exe.module in program.modules else []
-            entry = f"{exe.module}:{exe.function}" if exe.function else exe.module
         else:
             modules = [m for m in program.modules.values() if m.path == exe.script]
-            entry = exe.script
         if not modules:
             return ExecutableRef("no-python", entry=entry)
         module = modules[0]

@@ -1,0 +1,119 @@
+"""Facts as plain JSON and back, for the on-disk cache (never pickle).
+
+The front ends' facts are dataclasses of strings, numbers, lists, tuples, dicts and other
+such dataclasses. JSON has lists, strings, numbers, booleans and null; everything else is
+an object with one tag saying what it is:
+
+* ``{"t": [...]}`` a tuple, ``{"f": [...]}`` a frozenset (in a stable order),
+  ``{"m": [[key, value], ...]}`` a dict (any keys, insertion order kept);
+* ``{"c": "graph.model.Entity", "v": [...]}`` a dataclass of one of :data:`FACT_MODULES`:
+  its compared fields in order. Fields left out of comparisons are the producer's working
+  handles (an analysis's function number), not facts: they are not stored and come back as
+  their default.
+
+Decoding builds only those classes, and encoding refuses any other type (:class:`NotAFact`):
+a fact the format cannot say is never stored wrong — its group is analysed again next time.
+"""
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import json
+import math
+from typing import Any
+
+#: The modules whose dataclasses are facts (relative to the package).
+FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
+                "python_facts")
+
+
+class NotAFact(ValueError):
+    """A value the format cannot hold, or text that is not an encoded fact."""
+
+
+def _classes() -> dict[str, type]:
+    out = {}
+    for name in FACT_MODULES:
+        module = importlib.import_module(f"{__package__}.{name}")
+        for value in vars(module).values():
+            if isinstance(value, type) and dataclasses.is_dataclass(value) \
+                    and value.__module__ == module.__name__:
+                out[f"{name}.{value.__qualname__}"] = value
+    return out
+
+
+_CLASSES: dict[str, type] | None = None
+_FIELDS: dict[type, tuple[str, tuple[str, ...]]] = {}
+
+
+def _registry() -> dict[str, type]:
+    global _CLASSES
+    if _CLASSES is None:
+        _CLASSES = _classes()
+        for tag, cls in _CLASSES.items():
+            _FIELDS[cls] = (tag, tuple(f.name for f in dataclasses.fields(cls) if f.compare))
+    return _CLASSES
+
+
+def to_obj(value: Any) -> Any:
+    """``value`` as JSON-ready data; :class:`NotAFact` for a type the format does not hold."""
+    if value is None or isinstance(value, (bool, int, str)):
+        return value
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise NotAFact(f"non-finite number {value!r}")
+        return value
+    if isinstance(value, list):
+        return [to_obj(item) for item in value]
+    if isinstance(value, tuple):
+        return {"t": [to_obj(item) for item in value]}
+    if isinstance(value, frozenset):
+        return {"f": sorted((to_obj(item) for item in value), key=_stable)}
+    if isinstance(value, dict):
+        return {"m": [[to_obj(k), to_obj(v)] for k, v in value.items()]}
+    _registry()
+    known = _FIELDS.get(type(value))
+    if known is None:
+        raise NotAFact(f"not a fact: {type(value).__name__}")
+    tag, names = known
+    return {"c": tag, "v": [to_obj(getattr(value, name)) for name in names]}
+
+
+def _stable(obj: Any) -> str:
+    return json.dumps(obj, sort_keys=True)
+
+
+def from_obj(obj: Any) -> Any:
+    """The value :func:`to_obj` made ``obj`` from; :class:`NotAFact` for anything else."""
+    if obj is None or isinstance(obj, (bool, int, float, str)):
+        return obj
+    if isinstance(obj, list):
+        return [from_obj(item) for item in obj]
+    if not isinstance(obj, dict) or len(obj) not in (1, 2):
+        raise NotAFact("not an encoded fact")
+    if "t" in obj:
+        return tuple(from_obj(item) for item in _list(obj["t"]))
+    if "f" in obj:
+        return frozenset(from_obj(item) for item in _list(obj["f"]))
+    if "m" in obj:
+        pairs = [_list(pair) for pair in _list(obj["m"])]
+        if any(len(pair) != 2 for pair in pairs):
+            raise NotAFact("not a key-value pair")
+        return {from_obj(k): from_obj(v) for k, v in pairs}
+    cls = _registry().get(obj.get("c")) if isinstance(obj.get("c"), str) else None
+    if cls is None:
+        raise NotAFact(f"not a fact class: {obj.get('c')!r}")
+    names = _FIELDS[cls][1]
+    values = _list(obj.get("v"))
+    if len(values) != len(names):
+        raise NotAFact(f"{obj['c']}: {len(values)} values for {len(names)} fields")
+    try:
+        return cls(**{name: from_obj(value) for name, value in zip(names, values)})
+    except TypeError as exc:  # a field without a default not stored: not a fact class
+        raise NotAFact(str(exc)) from exc
+
+
+def _list(obj: Any) -> list:
+    if not isinstance(obj, list):
+        raise NotAFact("not a list")
+    return obj
