@@ -53,7 +53,7 @@ from .cpp import CPP_SUFFIXES
 from .escaping import escape_text
 from .graph.model import Diagnostic, Location
 from .options import Buffers, Settings
-from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes
+from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, forget_folders, read_bytes
 from .findings import Finding, RuleConfig
 
 CACHE_DIR_NAME = ".rosgraph-cache"
@@ -677,5 +677,6 @@ def workspace_report(root: Path, settings: Settings, buffers: Buffers = ()) -> W
 
 
 def start_run() -> None:
-    """Forget memoised reports: a new flake8 run must see the files as they are now."""
+    """Forget memoised reports and resolved folders: a new flake8 run must see the files as they are now."""
     _MEMO.clear()
+    forget_folders()

@@ -22,6 +22,7 @@ file's content.
 """
 from __future__ import annotations
 
+import functools
 import os
 import stat
 from pathlib import Path
@@ -59,14 +60,45 @@ def resolve_inside(path: Path, root: Path | None) -> Path:
     """``path`` with links resolved; :class:`UnsafeFile` when that leaves ``root`` (``None``: anywhere)."""
     # On the resolved texts (absolute, normalised): every file read passes here, and
     # ``Path.parents`` builds a path object per folder above the file.
-    resolved = os.path.realpath(path)
+    resolved = _resolved(os.fspath(path))
     if root is not None:
-        base = os.path.realpath(root)
-        if not os.path.isdir(base):
-            base = os.path.dirname(base)
+        base = _resolved_folder(os.fspath(root))
         if resolved != base and not resolved.startswith(base if base.endswith(os.sep) else base + os.sep):
             raise UnsafeFile("not read: a link to a file outside the workspace")
     return Path(resolved)
+
+
+def _resolved(text: str) -> str:
+    """``os.path.realpath(text)``, the folders above a file that is no link resolved once per run
+    (a workspace's files share a few hundred folders; resolving each path anew costs a system
+    call per folder above it). Paths with ``..`` take the full resolution, whose order differs."""
+    folder, name = os.path.split(text)
+    if not name or name == ".." or os.pardir in folder.split(os.sep):
+        return os.path.realpath(text)
+    try:
+        if stat.S_ISLNK(os.lstat(text).st_mode):
+            return os.path.realpath(text)
+    except OSError:
+        return os.path.realpath(text)
+    return os.path.join(_real_folder(os.path.abspath(folder or os.curdir)), name)
+
+
+@functools.lru_cache(maxsize=4096)
+def _real_folder(folder: str) -> str:
+    return os.path.realpath(folder)
+
+
+@functools.lru_cache(maxsize=64)
+def _resolved_folder(root: str) -> str:
+    """The resolved folder a ``root`` stands for (its parent when it is a file)."""
+    base = os.path.realpath(root)
+    return base if os.path.isdir(base) else os.path.dirname(base)
+
+
+def forget_folders() -> None:
+    """Resolve folders anew from here on: a new run must see links as they are now."""
+    _real_folder.cache_clear()
+    _resolved_folder.cache_clear()
 
 
 def _open_regular(path: Path, root: Path | None) -> tuple[int, os.stat_result]:

@@ -145,8 +145,9 @@ class Analysis:
         #: The whole analysis stops here (every account still busy is stopped). By default
         #: only the accounts bound the work: a shared cap would let one module's runaway
         #: analysis starve entry points that start later (the functions nobody calls).
+        #: Past every account's budget, so that an account always stops first, naming itself.
         self.max_task_runs = max_task_runs if max_task_runs is not None \
-            else ENTRY_TASK_RUNS * max(1, len(program.modules))
+            else ENTRY_TASK_RUNS * max(1, len(program.modules)) + 1
         self.task_runs = 0
         self.every_module_is_entry = every_module_is_entry
         self.relevant: set[str] = set()

@@ -153,17 +153,25 @@ class Program:
         of a group reads nothing of another: no global, class, function or object crosses
         between them, so each can be analysed — and its results kept — on its own.
         """
-        import networkx as nx
-        graph = nx.Graph()
-        graph.add_nodes_from(self.modules)
+        leader = {name: name for name in self.modules}
+
+        def find(name: str) -> str:
+            while leader[name] != name:
+                leader[name] = leader[leader[name]]  # halve the path on the way up
+                name = leader[name]
+            return name
+
         for name, imported in self.imports.items():
             for dotted in imported:
                 parts = dotted.split(".")
                 for end in range(1, len(parts) + 1):
                     other = ".".join(parts[:end])
-                    if other != name and other in self.modules:
-                        graph.add_edge(name, other)
-        return sorted(tuple(sorted(group)) for group in nx.connected_components(graph))
+                    if other in leader:
+                        leader[find(other)] = find(name)
+        groups: dict[str, list[str]] = {}
+        for name in self.modules:
+            groups.setdefault(find(name), []).append(name)
+        return sorted(tuple(sorted(group)) for group in groups.values())
 
     def part(self, names: tuple[str, ...]) -> Program:
         """A program of the modules ``names`` only (a group of :meth:`components`), resolving
