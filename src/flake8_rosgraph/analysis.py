@@ -3,6 +3,12 @@
 ``build_graph`` is the single entry point used by the CLI, the flake8 plugin and
 the tests.  It never raises: unreadable files, broken stubs, budget exhaustion and
 even internal errors become diagnostics on the returned graph.
+
+The Python modules are analysed in groups that import nothing from one another
+(:meth:`.Program.components`), each group on its own; what the graph needs is read
+off each group's analysis (:mod:`.python_facts`) — or taken from the cache for a group
+whose files did not change — and the groups' facts are merged before the C++ ends,
+launch systems and interface definitions join them.
 """
 from __future__ import annotations
 

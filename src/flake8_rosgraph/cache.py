@@ -17,7 +17,9 @@ later run on unchanged code) reads that file.
   (size, times, inode) in ``inputs.json``, signed like the entries; an unchanged
   file is not read again to compute the key (:class:`InputDigests`). The C++ partner
   ends are stored under a key of their own (the C++ files and package folders), so an
-  edit to Python code does not parse the C++ tree again (:func:`_cpp_memo`).
+  edit to Python code does not parse the C++ tree again (:func:`_cpp_memo`), and the facts of
+  each group of Python modules are stored under a key of their own files, so an edit
+  re-analyses the edited module's group only (:mod:`.facts_cache`).
 * **Concurrency**: a per-key lock file (``fcntl``/``msvcrt`` lock, released by
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
