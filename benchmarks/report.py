@@ -107,7 +107,7 @@ def workspace_table(corpus: Corpus, source: str, runs: int, summaries: dict[str,
         "|---|---:|---:|---:|---:|---:|---:|---:|---|",
     ]
     for key, summary in summaries.items():
-        per_line = key != "startup"
+        per_line = key != "startup" and not key.startswith("precommit")  # those read one file
         rows.append(
             f"| {summary.label} | {summary.wall_s:.3f} | {summary.wall_min_s:.3f}–{summary.wall_max_s:.3f} "
             f"| {summary.cpu_s:.3f} "
@@ -131,6 +131,10 @@ def workspace_targets(summaries: dict[str, Summary]) -> list[Target]:
         ratio_target("flake8 + plugin cold ÷ flake8 without", "cold", "flake8", 1.20),
         ratio_target("flake8 + plugin warm ÷ flake8 without", "warm", "flake8", 1.02),
         ratio_target("one file changed ÷ warm (≈ warm)", "changed", "warm", 1.05),
+        ratio_target("topic renamed in a leaf module ÷ flake8 without", "renamed", "flake8", 1.10),
+        Target("pre-commit on the edited file (wall s)",
+               summaries["precommit"].wall_s if "precommit" in summaries else None, 1.0, " s",
+               summaries["precommit"].cpu_s if "precommit" in summaries else None),
         # --jobs=auto: the workers run side by side, so only the wall ratio means anything.
         Target("--jobs=auto cold ÷ --jobs=auto without (wall)", _ratio(summaries, "cold-auto", "flake8-auto"),
                1.20, "×", None),
@@ -189,3 +193,18 @@ def exponents_line(points: Sequence[GrowthPoint]) -> str:
     wall, cpu = growth_exponents(points), growth_exponents(points, cpu=True)
     parts = [f"{names[k]} k={_fmt(v, '.2f')} (CPU {_fmt(cpu[k], '.2f')})" for k, v in wall.items()]
     return "log-log fit, time ≈ c·lines^k: " + ", ".join(parts)
+
+
+#: The block of ``benchmarks/README.md`` that ``run.py --readme`` rewrites.
+README_BEGIN = "<!-- run.py --readme: begin -->"
+README_END = "<!-- run.py --readme: end -->"
+
+
+def with_readme_block(readme: str, printed: str, command: str) -> str:
+    """``readme`` with the text between :data:`README_BEGIN` and :data:`README_END` replaced by
+    ``printed`` (what the run printed, machine and date first) and the command that printed it."""
+    start, end = readme.find(README_BEGIN), readme.find(README_END)
+    if start < 0 or end < start:
+        raise ValueError(f"no {README_BEGIN} … {README_END} block")
+    block = f"{README_BEGIN}\nPrinted by `{command}`:\n\n```\n{printed.rstrip()}\n```\n"
+    return readme[:start] + block + readme[end:]

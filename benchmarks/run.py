@@ -29,7 +29,7 @@ from flake8_rosgraph.cache import CACHE_DIR_NAME, RACY_SECONDS
 import growth
 import report
 from measure import CommandFailed, Summary
-from steps import PLUGIN_DIST, Corpus, Step, WorkspaceBench, run_steps
+from steps import PLUGIN_DIST, Corpus, LeafEdit, Step, WorkspaceBench, run_steps
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -51,6 +51,10 @@ def workspace_steps(bench: WorkspaceBench, with_plugin: bool) -> list[Step]:
     steps = [bench.startup(), bench.ast_parse(), bench.pyflakes(), bench.flake8_without()]
     if with_plugin:
         steps += [bench.flake8_cold(), bench.flake8_warm(), bench.flake8_one_changed()]
+        edit = LeafEdit.find(bench.root)
+        if edit is not None:  # a workspace without a topic literal in a leaf module has no such rows
+            steps += [bench.flake8_topic_renamed(edit), bench.precommit(edit, False),
+                      bench.precommit(edit, True)]
     steps.append(bench.flake8_without_auto())
     if with_plugin:
         steps.append(bench.flake8_cold_auto())
@@ -72,6 +76,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--scales", default=",".join(map(str, growth.DEFAULT_SCALES)),
                         help="growth series scale factors (default %(default)s)")
     parser.add_argument("--json", type=Path, metavar="OUT", help="also write all measurements as JSON")
+    parser.add_argument("--readme", action="store_true",
+                        help="also put the printed tables into benchmarks/README.md (its latest-results block)")
     args = parser.parse_args(argv)
     if not args.dir.is_dir():
         parser.error(f"not a directory: {args.dir}")
@@ -97,19 +103,21 @@ def main(argv: list[str] | None = None) -> int:
     machine = report.Machine.describe(version, load_before)
 
     targets = report.workspace_targets(summaries)
-    print(machine.line())
+    out = [machine.line()]
     if not with_plugin:
-        print(f"note: {PLUGIN_DIST} is not loadable by flake8; its rows are missing")
-    print()
-    print(report.workspace_table(corpus, str(args.dir), args.runs, summaries, results))
-    print()
+        out.append(f"note: {PLUGIN_DIST} is not loadable by flake8; its rows are missing")
+    out += ["", report.workspace_table(corpus, str(args.dir), args.runs, summaries, results), ""]
     if points:
-        print(report.growth_table(points, args.runs))
-        print()
-        print(report.exponents_line(points))
-        print()
+        out += [report.growth_table(points, args.runs), "", report.exponents_line(points), ""]
         targets += report.growth_targets(points)
-    print(report.targets_table(targets))
+    out.append(report.targets_table(targets))
+    printed = "\n".join(out)
+    print(printed)
+    if args.readme:
+        readme = Path(__file__).resolve().parent / "README.md"
+        command = " ".join(["benchmarks/run.py", *(argv if argv is not None else sys.argv[1:])])
+        readme.write_text(report.with_readme_block(readme.read_text(encoding="utf-8"), printed, command),
+                          encoding="utf-8")
 
     if args.json:
         data = {

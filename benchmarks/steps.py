@@ -4,8 +4,9 @@ Steps: interpreter start-up (the fixed cost of every subprocess row), ``ast.pars
 of every file in-process (the floor: no checker can avoid reading and parsing),
 pyflakes, flake8 ``-j1`` without the plugin, flake8 ``-j1`` with it (cold: its
 cache removed; warm: cache present, nothing changed; one file changed: one
-file's content edited, so the cache key misses), and the standalone ``graph``
-command. All subprocess steps run in the interpreter running the benchmark.
+file's content edited, so the cache key misses; a topic renamed in a leaf module,
+so a finding changes; flake8 on that one edited file, as pre-commit runs it), and
+the standalone ``graph`` command. All subprocess steps run in the interpreter running the benchmark.
 
 Each repetition runs every step once, in this order, so that slow drift in
 machine load (other work on the same host) hits all steps alike instead of
@@ -14,6 +15,7 @@ whichever step happens to run last.
 from __future__ import annotations
 
 import ast
+import contextlib
 import json
 import os
 import re
@@ -22,7 +24,7 @@ import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable, Iterator, Sequence
 
 from flake8_rosgraph.cache import CACHE_DIR_NAME
 
@@ -184,8 +186,84 @@ class WorkspaceBench:
         return Step("changed", "flake8 -j1 + plugin, one file changed", measure,
                     lambda out: f"{_count_reported(out)}; edited {rel}")
 
+    def flake8_topic_renamed(self, edit: LeafEdit) -> Step:
+        """Rename a topic in a module nothing imports (a new name each repetition), measure, restore."""
+        def measure(repetition: int) -> Sample:
+            with edit.applied(f"_renamed{repetition}"):
+                return self._flake8(True)
+
+        return Step("renamed", "flake8 -j1 + plugin, topic renamed in a leaf module", measure,
+                    lambda out: f"{_count_reported(out)}; {edit.describe(self.root)}")
+
+    def precommit(self, edit: LeafEdit, with_plugin: bool) -> Step:
+        """flake8 on the edited file only, as pre-commit runs it, the cache left by the runs before."""
+        hide = [] if with_plugin else ["--hide", PLUGIN_DIST]
+        rel = edit.path.relative_to(self.root).as_posix()
+
+        def measure(repetition: int) -> Sample:
+            with edit.applied(f"_precommit{repetition}"):
+                return run_command([self.python, str(LAUNCHER), *hide, "--", "--jobs=1", rel],
+                                   self.root, self.env, CHECKER_OK)
+
+        key, label = ("precommit", "pre-commit: flake8 + plugin on the edited file") if with_plugin \
+            else ("precommit-without", "pre-commit: flake8 without plugin on the edited file")
+        return Step(key, label, measure, _count_reported)
+
     def graph(self) -> Step:
         return Step("graph", "graph command (--format json)",
                     lambda _: run_command([self.python, "-m", "flake8_rosgraph", "graph", ".",
                                            "--format", "json"], self.root, self.env),
                     _describe_graph)
+
+
+@dataclass(frozen=True)
+class LeafEdit:
+    """A topic literal of a subscription or publisher in a module no other module imports."""
+
+    path: Path
+    line: int
+    start: int          # byte offsets of the literal's text inside its line
+    end: int
+    topic: str
+
+    @classmethod
+    def find(cls, root: Path) -> LeafEdit | None:
+        """The first such literal by path, subscriptions first; ``None`` when there is none."""
+        from flake8_rosgraph.absint.program import Program
+        from flake8_rosgraph.workspace import load_workspace
+
+        program = Program(load_workspace(root).modules)
+        imported = {".".join(name.split(".")[:end]) for names in program.imports.values()
+                    for name in names for end in range(1, name.count(".") + 2)}
+        found = []
+        for module in program.modules.values():
+            if module.name in imported:
+                continue
+            for call in ast.walk(module.tree):
+                if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) \
+                        and call.func.attr in ("create_subscription", "create_publisher") \
+                        and len(call.args) > 1 and isinstance(call.args[1], ast.Constant) \
+                        and isinstance(call.args[1].value, str) and call.args[1].end_lineno == call.lineno:
+                    literal = call.args[1]
+                    found.append((call.func.attr != "create_subscription", module.path, literal.lineno,
+                                  literal.col_offset, literal.end_col_offset, literal.value))
+        if not found:
+            return None
+        _, path, line, start, end, topic = min(found)
+        return cls(root / path, line, start, end, topic)
+
+    @contextlib.contextmanager
+    def applied(self, suffix: str) -> Iterator[None]:
+        """The file with the topic renamed (``topic + suffix``) for the block, then as it was."""
+        original = self.path.read_bytes()
+        lines = original.split(b"\n")
+        text = lines[self.line - 1]
+        lines[self.line - 1] = text[:self.start] + repr(self.topic + suffix).encode() + text[self.end:]
+        self.path.write_bytes(b"\n".join(lines))
+        try:
+            yield
+        finally:
+            self.path.write_bytes(original)
+
+    def describe(self, root: Path) -> str:
+        return f"renamed '{self.topic}' in {self.path.relative_to(root).as_posix()}:{self.line}"

@@ -39,6 +39,7 @@ class Listener(Node):
         super().__init__('listener')
         self.sub = self.create_subscription(String, 'chatter', self.on_msg, 10)
         self.heard = self.create_subscription(String, 'unheard', self.on_msg, 10)
+        self.status = self.create_subscription(String, 'status', self.on_msg, 10)
 
     def on_msg(self, msg):
         self.get_logger().info(msg.data)
@@ -55,7 +56,9 @@ def _tiny_workspace(root: Path) -> dict[Path, bytes]:
     (package / "chat").mkdir(parents=True)
     (package / "package.xml").write_text("<package format='3'><name>chat</name></package>\n")
     files = {package / "chat" / "__init__.py": b"",
-             package / "chat" / "talker.py": TALKER.encode(),
+             package / "chat" / "talker.py": TALKER.replace(
+                 "        self.timer", "        self.status = self.create_publisher(String, 'status', 10)\n"
+                 "        self.timer").encode(),
              package / "chat" / "listener.py": LISTENER.encode()}
     for path, data in files.items():
         path.write_bytes(data)
@@ -75,28 +78,38 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     assert header in table
     for label in ("ast.parse, all files", "pyflakes (subprocess)", "flake8 -j1 without plugin",
                   "flake8 -j1 + plugin, cold", "flake8 -j1 + plugin, warm",
-                  "flake8 -j1 + plugin, one file changed", "flake8 --jobs=auto without plugin",
+                  "flake8 -j1 + plugin, one file changed",
+                  "flake8 -j1 + plugin, topic renamed in a leaf module",
+                  "pre-commit: flake8 without plugin on the edited file",
+                  "pre-commit: flake8 + plugin on the edited file", "flake8 --jobs=auto without plugin",
                   "flake8 --jobs=auto + plugin, cold", "graph command"):
         assert f"| {label}" in table, label
     lines = sum(len(data.splitlines()) for data in files.values())
     assert f"— 3 files, {lines} lines;" in table
     assert "| flake8 + plugin cold ÷ flake8 without |" in table
     assert "| --jobs=auto cold ÷ --jobs=auto without (wall) |" in table
+    assert "| topic renamed in a leaf module ÷ flake8 without |" in table
+    assert "| pre-commit on the edited file (wall s) |" in table
     assert re.search(r"^\d{4}-\d\d-\d\d \d\d:\d\d UTC; machine: ", table, re.MULTILINE)
 
     data = json.loads(out.read_text())
     steps = data["workspace"]["steps"]
-    assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed",
-                           "flake8-auto", "cold-auto", "graph"]
+    assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed", "renamed",
+                           "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph"]
+    assert steps["renamed"]["result"].endswith("renamed 'chatter' in src/chat/chat/listener.py:9")
     assert steps["graph"]["result"] == "2 nodes, 0 diagnostics"
     # The subscription to 'unheard' has no publisher: the plugin ran and reported in every plugin row,
     # and the baseline did not.
     ros_reported = {key: int(re.search(r"(\d+) ROS", step["result"]).group(1))
                     for key, step in steps.items()
-                    if key in ("flake8", "cold", "warm", "changed", "flake8-auto", "cold-auto")}
+                    if key not in ("startup", "ast", "pyflakes", "graph")}
     assert ros_reported["flake8"] == ros_reported["flake8-auto"] == 0
     assert ros_reported["cold"] > 0
     assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"] == ros_reported["cold-auto"]
+    # The renamed subscription has no publisher, and 'chatter' no subscriber: the change shows,
+    # in the whole run and in the edited file alone.
+    assert ros_reported["renamed"] == ros_reported["warm"] + 2
+    assert ros_reported["precommit-without"] == 0 and ros_reported["precommit"] >= 1
     assert all(step["peak_mb"] is None or step["peak_mb"] > 0 for step in steps.values())
 
     # The benchmark works on a copy: no cache, no edit in the measured directory.
@@ -156,3 +169,14 @@ def test_loglog_fit_recovers_the_exponent() -> None:
     assert growth.loglog_exponent(sizes, [3e-5 * s ** 1.5 for s in sizes]) == pytest.approx(1.5)
     assert growth.loglog_exponent(sizes, [0.2 * s for s in sizes]) == pytest.approx(1.0)
     assert growth.loglog_exponent([1000], [1.0]) is None
+
+
+def test_readme_block_is_replaced_with_what_the_run_printed() -> None:
+    import report
+    readme = f"# Speed\n\nintro\n\n{report.README_BEGIN}\nold tables\n{report.README_END}\n\n## History\n"
+    updated = report.with_readme_block(readme, "2026-11-27 UTC; machine: …\n\n| step |\n", "benchmarks/run.py ws")
+    assert updated.startswith("# Speed\n\nintro\n\n" + report.README_BEGIN + "\nPrinted by `benchmarks/run.py ws`")
+    assert "```\n2026-11-27 UTC; machine: …\n\n| step |\n```\n" + report.README_END in updated
+    assert "old tables" not in updated and updated.endswith("## History\n")
+    with pytest.raises(ValueError):
+        report.with_readme_block("no block here", "x", "y")
