@@ -1,0 +1,164 @@
+"""Code that a framework runs, not the workspace: found on repositories outside every test set
+(ros/diagnostics, ros2/system_tests, bdaiinstitute/spot_ros2, ros-visualization/rqt_bag,
+SSL-Roots/consai_ros2), on realistic multi-file packages. Each mechanism follows what the
+framework does at run time, with a twin where following it must not invent an entity."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from flake8_rosgraph.analysis import analyse, build_graph
+from flake8_rosgraph.explain import explain
+
+from test_workspace_discovery import PACKAGE_XML, write
+
+
+def entities(root: Path) -> dict[str | None, list[tuple[str, str]]]:
+    """Each node's publishers, subscriptions, services and clients as ``(kind, name or "?")``."""
+    kinds = ("publishers", "subscriptions", "services", "clients")
+    return {node.fqn: sorted((e.kind, e.name or "?") for e in node.entities if e.kind in kinds)
+            for node in build_graph(root).nodes}
+
+
+def explained(root: Path) -> dict[tuple[str, int], tuple[str, tuple[str, ...]]]:
+    graph, analysis = analyse(root)
+    return {(e.site.path, e.site.line): (e.status, e.reasons)
+            for e in explain(analysis, graph).explanations}
+
+
+# -- unittest: the test runner instantiates every TestCase -------------------------------------
+DRIVER = {
+    "base_driver/package.xml": PACKAGE_XML.format(name="base_driver", build="ament_python"),
+    "base_driver/setup.py": """
+        from setuptools import setup
+        setup(name='base_driver', packages=['base_driver'],
+              entry_points={'console_scripts': ['driver = base_driver.driver:main']})
+    """,
+    "base_driver/base_driver/__init__.py": "",
+    "base_driver/base_driver/driver.py": """
+        import rclpy
+        from geometry_msgs.msg import Twist
+        from nav_msgs.msg import Odometry
+        from rclpy.node import Node
+
+
+        class Driver(Node):
+            def __init__(self):
+                super().__init__('base_driver')
+                self.create_subscription(Twist, 'cmd_vel', self.on_cmd, 10)
+                self.odom_pub = self.create_publisher(Odometry, 'odom', 10)
+
+            def on_cmd(self, msg):
+                self.odom_pub.publish(Odometry())
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Driver())
+    """,
+    # A base shared by the test cases: each names its probe node in a class attribute.
+    "base_driver/test/ros_case.py": """
+        import unittest
+
+        import rclpy
+
+
+        class RosTestCase(unittest.TestCase):
+            PROBE = None
+
+            @classmethod
+            def setUpClass(cls):
+                rclpy.init()
+
+            def setUp(self):
+                self.probe = rclpy.create_node(self.PROBE)
+
+            def tearDown(self):
+                self.probe.destroy_node()
+    """,
+    "base_driver/test/test_driver.py": """
+        import unittest
+
+        from base_driver.driver import Driver
+        from geometry_msgs.msg import Twist
+        from nav_msgs.msg import Odometry
+        import rclpy
+        from ros_case import RosTestCase
+        from std_srvs.srv import Trigger
+
+
+        class TestDriver(RosTestCase):
+            PROBE = 'driver_probe'
+
+            def setUp(self):
+                super().setUp()
+                self.driver = Driver()
+                self.cmd_pub = self.probe.create_publisher(Twist, 'cmd_vel', 10)
+
+            def test_odometry_follows_commands(self):
+                received = []
+                self.probe.create_subscription(Odometry, 'odom', received.append, 10)
+                self.cmd_pub.publish(Twist())
+                rclpy.spin_once(self.driver, timeout_sec=0.1)
+
+
+        class TestReset(unittest.TestCase):
+            @classmethod
+            def setUpClass(cls):
+                rclpy.init()
+                cls.node = rclpy.create_node('reset_probe')
+
+            def test_reset_service(self):
+                client = self.node.create_client(Trigger, '/base_driver/reset')
+                self.assertFalse(client.wait_for_service(timeout_sec=0.1))
+    """,
+}
+
+
+def test_the_test_runner_instantiates_every_test_case(tmp_path: Path) -> None:
+    """A leaf ``unittest.TestCase`` subclass is built by the test runner: its ``setUpClass``,
+    ``setUp`` and tests run, with what a shared base class (in another module) does in its own
+    ``setUp`` and a node kept on the class by ``setUpClass`` (ros/diagnostics: 14 of 38 sites
+    were "a test case: analysed code never does")."""
+    root = write(tmp_path, DRIVER)
+    assert entities(root) == {
+        "/base_driver": [("publishers", "/odom"), ("subscriptions", "/cmd_vel")],
+        "/driver_probe": [("publishers", "/cmd_vel"), ("subscriptions", "/odom")],
+        "/reset_probe": [("clients", "/base_driver/reset")],
+    }
+    gaps = {site: why for site, why in explained(root).items() if why[0] != "complete"}
+    assert gaps == {}
+
+
+def test_a_base_test_case_is_not_run_alone(tmp_path: Path) -> None:
+    """The shared base is run only through the test cases that derive from it: alone, its
+    probe's name (``PROBE = None``) would be a node of unknown name no test ever starts."""
+    root = write(tmp_path, DRIVER)
+    assert None not in entities(root)
+
+
+def test_a_test_case_on_a_mock_invents_nothing(tmp_path: Path) -> None:
+    """A test case whose "node" is a mock creates nothing in the graph, and ``--explain`` says
+    the receiver is no node (not that the class is never instantiated)."""
+    root = write(tmp_path, {
+        "planner/package.xml": PACKAGE_XML.format(name="planner", build="ament_python"),
+        "planner/planner/__init__.py": "",
+        "planner/test/test_planner.py": """
+            import unittest
+            from unittest import mock
+
+            from nav_msgs.msg import Path
+
+
+            class TestPlanner(unittest.TestCase):
+                def setUp(self):
+                    self.node = mock.MagicMock()
+
+                def test_publishes_the_plan(self):
+                    pub = self.node.create_publisher(Path, 'plan', 1)
+                    pub.publish.assert_not_called()
+        """,
+    })
+    assert entities(root) == {}
+    [(status, reasons)] = explained(root).values()
+    assert status == "missing"
+    assert "`self.node` is not known to be a modelled library object here" in reasons
