@@ -260,3 +260,78 @@ def test_the_synchros2_process_node_is_not_invented(tmp_path: Path) -> None:
     status, reasons = explained(root)[("quad_driver/quad_driver/teleop.py", 7)]
     assert status == "missing"
     assert "`main.node` is not known to be a modelled library object here" in reasons
+
+
+# -- rqt: plugin.xml says which provider builds a plugin --------------------------------------
+def rqt_package(base_class_type: str) -> dict[str, str]:
+    """An rqt plugin on qt_gui's own ``Plugin`` class (as rqt_bag and consai_visualizer are),
+    exported with ``base_class_type`` (none when empty); its widget, in another module, creates
+    its entities on the node of the context."""
+    written = f' base_class_type="{base_class_type}"' if base_class_type else ""
+    return {
+        "rqt_mission/package.xml": PACKAGE_XML.format(name="rqt_mission", build="ament_python").replace(
+            "</export>", '<rqt_gui plugin="${prefix}/plugin.xml"/></export>'),
+        "rqt_mission/plugin.xml": f"""
+            <library path="src">
+              <class name="Mission" type="rqt_mission.mission.Mission"{written}>
+                <description>Mission control</description>
+              </class>
+            </library>
+        """,
+        "rqt_mission/setup.py": """
+            from setuptools import setup
+            setup(name='rqt_mission', packages=['rqt_mission'], package_dir={'': 'src'})
+        """,
+        "rqt_mission/src/rqt_mission/__init__.py": "",
+        "rqt_mission/src/rqt_mission/mission.py": """
+            from qt_gui.plugin import Plugin
+
+            from .mission_widget import MissionWidget
+
+
+            class Mission(Plugin):
+                def __init__(self, context):
+                    super(Mission, self).__init__(context)
+                    self._widget = MissionWidget(context.node)
+                    context.add_widget(self._widget)
+        """,
+        "rqt_mission/src/rqt_mission/mission_widget.py": """
+            from python_qt_binding.QtWidgets import QWidget
+            import rclpy.qos
+            from std_msgs.msg import String
+            from std_srvs.srv import Trigger
+
+
+            class MissionWidget(QWidget):
+                def __init__(self, node):
+                    super().__init__()
+                    self._node = node
+                    self._status = node.create_subscription(
+                        String, 'mission/status', self.on_status, rclpy.qos.qos_profile_sensor_data)
+                    self._abort = node.create_client(Trigger, 'mission/abort')
+
+                def on_status(self, msg):
+                    self.update()
+        """,
+    }
+
+
+def test_an_rqt_plugin_on_qt_guis_base_gets_the_ros_context(tmp_path: Path) -> None:
+    """A plugin exported as an ``rqt_gui_py::Plugin`` is built by rqt_gui_py's provider, with
+    the ROS 2 context, whatever its Python base: its entities are on the rqt node (rqt_bag,
+    consai_visualizer: 6 creation sites missing before)."""
+    root = write(tmp_path, rqt_package("rqt_gui_py::Plugin"))
+    assert entities(root) == {
+        None: [("clients", "/mission/abort"), ("subscriptions", "/mission/status")]}
+    [node] = build_graph(root).nodes
+    assert (node.namespace, node.location.path) == ("/", "rqt_mission/src/rqt_mission/mission.py")
+
+
+def test_a_plugin_export_without_its_provider_gets_no_invented_node(tmp_path: Path) -> None:
+    """Exported without a base class type, the plugin's provider is not known: no rqt node is
+    made up for it, and ``--explain`` says the widget's node is unknown."""
+    root = write(tmp_path, rqt_package(""))
+    assert entities(root) == {}
+    status, reasons = explained(root)[("rqt_mission/src/rqt_mission/mission_widget.py", 11)]
+    assert status == "missing"
+    assert "`node` is not known to be a modelled library object here" in reasons
