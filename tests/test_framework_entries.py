@@ -335,3 +335,126 @@ def test_a_plugin_export_without_its_provider_gets_no_invented_node(tmp_path: Pa
     status, reasons = explained(root)[("rqt_mission/src/rqt_mission/mission_widget.py", 11)]
     assert status == "missing"
     assert "`node` is not known to be a modelled library object here" in reasons
+
+
+# -- pytest: fixtures are what the test functions' parameters receive -----------------------
+GRIPPER = {
+    "gripper/package.xml": PACKAGE_XML.format(name="gripper", build="ament_python"),
+    "gripper/setup.py": """
+        from setuptools import setup
+        setup(name='gripper', packages=['gripper'],
+              entry_points={'console_scripts': ['gripper = gripper.gripper_node:main']})
+    """,
+    "gripper/gripper/__init__.py": "",
+    "gripper/gripper/gripper_node.py": """
+        import rclpy
+        from rclpy.action import ActionServer
+        from rclpy.node import Node
+        from control_msgs.action import GripperCommand
+
+
+        class GripperNode(Node):
+            def __init__(self, name='gripper'):
+                super().__init__(name)
+                self.server = ActionServer(self, GripperCommand, 'gripper_cmd', self.execute)
+
+            def execute(self, goal_handle):
+                return GripperCommand.Result()
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(GripperNode())
+    """,
+    # Shared by every test of the folder: a helper node, and the node under test.
+    "gripper/test/conftest.py": """
+        import pytest
+        import rclpy
+        from rclpy.node import Node
+
+        from gripper.gripper_node import GripperNode
+
+
+        @pytest.fixture
+        def helper():
+            node = Node('gripper_test_helper')
+            try:
+                yield node
+            finally:
+                node.destroy_node()
+
+
+        @pytest.fixture(name='gripper')
+        def gripper_under_test(helper):
+            return GripperNode('gripper_under_test')
+    """,
+    "gripper/test/test_gripper.py": """
+        import pytest
+        from rclpy.action import ActionClient
+        from control_msgs.action import GripperCommand
+        from std_msgs.msg import Float64
+        from std_srvs.srv import Trigger
+
+
+        @pytest.fixture
+        def status_probe(helper):
+            yield helper.create_publisher(Float64, 'gripper/position', 1)
+
+
+        def test_goal_is_accepted(helper, gripper, status_probe):
+            client = ActionClient(helper, GripperCommand, 'gripper_cmd')
+            assert client.wait_for_server(timeout_sec=1.0)
+
+
+        @pytest.mark.parametrize('helper', ['a', 'b'])
+        def test_parametrized_name_is_no_fixture(helper):
+            helper.create_client(Trigger, 'calibrate')
+    """,
+    # Another folder's conftest is not seen from gripper/test.
+    "tools/test/conftest.py": """
+        import pytest
+        from rclpy.node import Node
+
+
+        @pytest.fixture
+        def bench():
+            return Node('bench')
+    """,
+    "gripper/test/test_bench.py": """
+        import rclpy
+        from std_srvs.srv import Trigger
+
+
+        def test_bench_is_not_a_fixture_here(bench):
+            bench.create_service(Trigger, 'reset', lambda req, res: res)
+    """,
+}
+
+
+def test_pytest_passes_each_test_the_fixture_of_its_parameters_name(tmp_path: Path) -> None:
+    """A test function's parameter is the fixture of that name from its module or a
+    ``conftest.py`` above it: what a generator fixture yields or a fixture returns, fixtures
+    using fixtures, ``name=`` renames (kas-lab/suave: 15 creation sites of its tests were on
+    an unknown ``test_node``)."""
+    root = write(tmp_path, GRIPPER)
+    graph = build_graph(root)
+    ends = {(n.fqn, e.kind, e.name) for n in graph.nodes for e in n.entities
+            if e.kind in ("publishers", "action_clients", "action_servers", "services", "clients")}
+    assert ends == {
+        ("/gripper", "action_servers", "/gripper_cmd"),
+        ("/gripper_under_test", "action_servers", "/gripper_cmd"),
+        ("/gripper_test_helper", "action_clients", "/gripper_cmd"),
+        ("/gripper_test_helper", "publishers", "/gripper/position"),
+    }
+
+
+def test_a_parametrized_or_unseen_name_is_not_a_fixture(tmp_path: Path) -> None:
+    """A parameter ``parametrize`` fills, or named like a fixture of a ``conftest.py`` the
+    test cannot see, gets no fixture: nothing is created on it, and ``--explain`` says so."""
+    root = write(tmp_path, GRIPPER)
+    found = explained(root)
+    for site in (("gripper/test/test_gripper.py", 20), ("gripper/test/test_bench.py", 6)):
+        status, reasons = found[site]
+        assert status == "missing"
+        assert any(r.startswith("`helper` is not known") or r.startswith("`bench` is not known")
+                   for r in reasons)

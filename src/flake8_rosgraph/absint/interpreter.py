@@ -23,6 +23,7 @@ from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, M
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
+from .fixtures import Fixtures
 from .instances import InstanceFacts
 from .objects import ObjectSemantics
 
@@ -47,6 +48,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
         self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
+        self.fixtures = Fixtures(self.program)
 
     # =====================================================================================
     # tasks and CFGs
@@ -62,6 +64,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             func = self.program.functions[task[1]]
             frame = Frame(task, func.module, func)
             env = dict(zip(self.param_names(func), task[2]))
+            for name, fixture in self.fixtures.arguments(func).items():
+                if env[name].is_top:
+                    env[name] = self.fixture_value(fixture, task)
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame
@@ -78,6 +83,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if frame.func is not None and frame.func.is_generator:
             ret = TOP
         return ret, frame.effects, frame.calls, frame.falls_off
+
+    def fixture_value(self, fid: int, reader: Task) -> Value:
+        """What pytest passes for the fixture function ``fid``: what it yields (a generator)
+        or returns, in the task pytest runs it in (its own fixtures bound the same way);
+        unknown until that task has produced it (``reader`` re-runs then)."""
+        func = self.program.functions[fid]
+        task = self.an.function_task(fid, self.default_context(fid, None))
+        self.an.schedule(task)
+        value = self.an.read(("yield", fid) if func.is_generator else ("ret", task), reader)
+        return TOP if value.is_bottom else value
 
     @staticmethod
     def _cfg_of(frame: Frame) -> CFG:
