@@ -406,7 +406,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     self.program.closure_owner(func.fid, name)
                 if owner is not None:
                     return self.an.read(("c", owner, name), frame.task)
+            if name == "__class__":
+                return self._defining_class(func)
         return self.load_global(frame.module, name)
+
+    def _defining_class(self, func) -> Value:
+        """``__class__`` in a method (or a function nested in one): the class whose body
+        defines the method — the implicit cell ``super()`` uses, whatever ``self`` is."""
+        while func is not None and func.cls is None:
+            func = self.program.functions[func.parent] if func.parent is not None else None
+        return atoms([ClassAtom(func.cls)]) if func is not None else TOP
 
     def load_global(self, module: Module, name: str) -> Value:
         self.program.ensure(module.name)
