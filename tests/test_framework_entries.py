@@ -318,3 +318,26 @@ def test_a_parametrized_or_unseen_name_is_not_a_fixture(tmp_path: Path) -> None:
         assert status == "missing"
         assert any(r.startswith("`helper` is not known") or r.startswith("`bench` is not known")
                    for r in reasons)
+
+
+def test_a_test_waits_for_its_fixture_and_says_so(tmp_path: Path) -> None:
+    """A fixture that never produces a value (it always raises) never lets its test run, as
+    pytest errors the test: nothing is created on it, and ``--explain`` names the fixture."""
+    root = write(tmp_path, dict(GRIPPER, **{"gripper/test/test_hardware.py": """
+        import pytest
+        import rclpy
+        from sensor_msgs.msg import Image
+
+
+        @pytest.fixture
+        def camera_node():
+            raise RuntimeError('set CAMERA_DEVICE to run the hardware tests')
+
+
+        def test_camera_streams(camera_node):
+            camera_node.create_subscription(Image, 'image_raw', print, 1)
+    """}))
+    status, reasons = explained(root)[("gripper/test/test_hardware.py", 12)]
+    assert (status, reasons) == ("missing", (
+        "pytest runs test_camera_streams with fixture `camera_node`, which the analysis never "
+        "sees return or yield a value",))

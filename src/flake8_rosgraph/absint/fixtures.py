@@ -10,7 +10,8 @@ names gets the listed values instead, and a name no fixture of the workspace def
 plugin's, pytest's own ``request``) stays unknown.
 
 This module only finds, syntactically, which fixture function each parameter names; the
-interpreter reads the fixture's value from the heap (see ``Interpreter.run_task``).
+interpreter reads the fixture's value from the heap, and runs the test only once every
+fixture it takes has a value (see ``Interpreter.run_task``, ``Interpreter.fixture_value``).
 """
 from __future__ import annotations
 

@@ -57,7 +57,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if task[0] == "mod":
             module = self.program.ensure(task[1])
             if module is None:  # too deeply nested to walk: reported by the program
-                return BOTTOM, {}
+                return BOTTOM, {}, {}, False
             frame = Frame(task, module)
             env: Env = {}
         else:
@@ -67,6 +67,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             for name, fixture in self.fixtures.arguments(func).items():
                 if env[name].is_top:
                     env[name] = self.fixture_value(fixture, task)
+                    if env[name].is_bottom:
+                        return BOTTOM, {}, {}, False  # pytest runs it once the fixture is set up
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame
@@ -86,13 +88,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
 
     def fixture_value(self, fid: int, reader: Task) -> Value:
         """What pytest passes for the fixture function ``fid``: what it yields (a generator)
-        or returns, in the task pytest runs it in (its own fixtures bound the same way);
-        unknown until that task has produced it (``reader`` re-runs then)."""
+        or returns, in the task pytest runs it in (its own fixtures bound the same way).
+        Nothing (⊥) until that task has produced it: ``reader`` waits, as pytest runs no
+        test whose fixture is not set up, and re-runs once the value exists (running it with
+        an unknown value first would spend the contexts of the helpers it calls); unknown if
+        the budget abandoned that task."""
         func = self.program.functions[fid]
         task = self.an.function_task(fid, self.default_context(fid, None))
         self.an.schedule(task)
         value = self.an.read(("yield", fid) if func.is_generator else ("ret", task), reader)
-        return TOP if value.is_bottom else value
+        return TOP if value.is_bottom and task in self.an.abandoned else value
 
     @staticmethod
     def _cfg_of(frame: Frame) -> CFG:
