@@ -22,6 +22,8 @@ from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 from .absint.engine import Analysis, Effect
+from .absint.fixtures import Fixtures
+from .absint.values import BOTTOM
 from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
 from .absint.program import Function, Module, Program
@@ -123,6 +125,7 @@ class _Explainer:
         self.callables = creation_callables(self.library)
         self._subclasses: dict[int, list[int]] | None = None
         self._class_ids: dict[int, int] | None = None  # id(ClassDef) -> cid, built when needed
+        self._fixtures: Fixtures | None = None
         self.effects: dict[tuple[str, int, int], list[Effect]] = {}
         for eff in analysis.all_effects():
             if eff.kind in CREATION_KINDS and not switched_off(eff):
@@ -302,6 +305,11 @@ class _Explainer:
         if budget:
             return [budget]
         if where not in self.an.reached_calls:
+            unset = self._unset_fixtures(func) if func is not None else []
+            if unset:
+                return [f"pytest runs {func.qualname} with {_plural(len(unset), 'fixture')} "
+                        f"{', '.join(f'`{n}`' for n in unset)}, which the analysis never sees "
+                        "return or yield a value"]
             return ["the analysis never reaches this line (every path to it goes through a "
                     "branch, exception or call the analysis decided cannot get here)"]
         receiver = call.func.value if isinstance(call.func, ast.Attribute) else call.func
@@ -316,6 +324,20 @@ class _Explainer:
                            f"models), and this call does not have the shape of {model.qualname} "
                            "(its arguments' number, names and kinds)")
         return reasons + self._origin_reasons(call, scope, receiver, module)
+
+    def _unset_fixtures(self, func: Function) -> list[str]:
+        """The pytest fixtures ``func`` takes whose function never produced a value."""
+        if self._fixtures is None:
+            self._fixtures = Fixtures(self.program)
+        out = []
+        for name, fid in sorted(self._fixtures.arguments(func).items()):
+            fixture = self.program.functions[fid]
+            produced = [task for task in self.an.effects if task[0] == "fn" and task[1] == fid
+                        and not self.an.heap.get(("ret", task), BOTTOM).is_bottom]
+            if fixture.is_generator and self.an.heap.get(("yield", fid), BOTTOM).is_bottom \
+                    or not fixture.is_generator and not produced:
+                out.append(name)
+        return out
 
     def _never_called(self, func: Function) -> str:
         if isinstance(func.node, ast.Lambda):

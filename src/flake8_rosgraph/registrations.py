@@ -21,7 +21,11 @@ entry points of the analysis like ``console_scripts`` are:
   Python half no Python code constructs.
 
 The result is a set of dotted ``module.Class`` names; a name that is no class of the
-workspace (a function, a missing module) is simply never matched.
+workspace (a function, a missing module) is simply never matched. A ``plugin.xml`` class also
+says which framework loads it (``base_class_type="rqt_gui_py::Plugin"``), which its Python
+base need not: rqt plugins commonly derive from ``qt_gui.plugin.Plugin`` and are still built
+by rqt_gui_py's provider, with its ROS 2 context. The set keeps those names
+(:attr:`Registered.base_types`), for the library model to match (``registered_as``).
 """
 from __future__ import annotations
 
@@ -32,6 +36,8 @@ import re
 import sys
 import xml.parsers.expat
 from pathlib import Path
+from types import MappingProxyType
+from typing import Iterable, Mapping
 
 from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
@@ -52,17 +58,37 @@ _PY_MODULE_VAR = re.compile(r"\b(\w+)\s*=\s*" + _IMPORT)
 _PY_ATTR_CALL = re.compile(r'(?:\b(\w+)|' + _IMPORT + r')\s*\.\s*attr\(\s*"([A-Za-z_]\w*)"\s*\)\s*\(')
 
 
-def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
+class Registered(frozenset):
+    """The ``module.Class`` names the packages register (a frozenset of them: what the engine
+    matches classes against), with the base class type each ``plugin.xml`` registration writes
+    for its class (``{"pkg.module.Class": "rqt_gui_py::Plugin"}``)."""
+
+    base_types: Mapping[str, str]
+
+    def __new__(cls, names: Iterable[str], base_types: Mapping[str, str]) -> "Registered":
+        made = super().__new__(cls, names)
+        made.base_types = MappingProxyType(dict(sorted(base_types.items())))
+        return made
+
+    def __reduce__(self):
+        return Registered, (sorted(self), dict(self.base_types))
+
+
+def registered_classes(root: Path) -> tuple[Registered, list[Diagnostic]]:
     """``module.Class`` of every class the packages under ``root`` register with a framework, and
     a diagnostic per package whose metadata could not be read (it registers nothing then; its
     code is still analysed)."""
     found: set[str] = set()
+    base_types: dict[str, str] = {}
     diagnostics: list[Diagnostic] = []
     for manifest in package_xml_files(root):
         folder = manifest.parent
         try:
             found.update(_entry_point_targets(folder, root))
-            found.update(_plugin_classes(manifest, folder, root))
+            for written, base_type in _plugin_classes(manifest, folder, root):
+                found.add(written)
+                if base_type:
+                    base_types.setdefault(written, base_type)
             found.update(_robot_description_plugins(folder, root))
             found.update(_embedded_python_classes(folder, root))
         except (OSError, UnicodeDecodeError, ValueError, RecursionError, MemoryError, XmlRefused,
@@ -72,7 +98,7 @@ def registered_classes(root: Path) -> tuple[frozenset[str], list[Diagnostic]]:
                                                     f"(entry points, plugin.xml, robot descriptions, pybind11) are "
                                                     f"not known: "
                                                     f"{describe(exc)}"))
-    return frozenset(found), diagnostics
+    return Registered(found, base_types), diagnostics
 
 
 def _entry_point_targets(folder: Path, root: Path) -> list[str]:
@@ -122,8 +148,9 @@ def _target(entry: str) -> str | None:
     return f"{module.strip()}.{attr}"
 
 
-def _plugin_classes(manifest: Path, folder: Path, root: Path) -> list[str]:
-    classes: list[str] = []
+def _plugin_classes(manifest: Path, folder: Path, root: Path) -> list[tuple[str, str]]:
+    """``(type, base_class_type)`` of every Python class of the package's plugin descriptions."""
+    classes: list[tuple[str, str]] = []
     for relative in sorted(set(_EXPORTED_PLUGIN.findall(read_text(manifest, root)))):
         description = (folder / relative).resolve()
         if not is_regular_file(description) or not description.is_relative_to(folder.resolve()):
@@ -132,9 +159,10 @@ def _plugin_classes(manifest: Path, folder: Path, root: Path) -> list[str]:
     return classes
 
 
-def _class_types(text: str) -> list[str]:
-    """The Python ``type`` of every ``<class>`` in a plugin description file."""
-    types: list[str] = []
+def _class_types(text: str) -> list[tuple[str, str]]:
+    """The Python ``type`` of every ``<class>`` in a plugin description file, with its
+    ``base_class_type`` (empty when not written)."""
+    types: list[tuple[str, str]] = []
     parser = safe_parser()
     depth = [0]
 
@@ -144,7 +172,7 @@ def _class_types(text: str) -> list[str]:
             raise XmlRefused(f"elements nested deeper than {MAX_XML_DEPTH}")
         written = attrs.get("type", "")
         if tag == "class" and "::" not in written and _DOTTED.match(written):
-            types.append(written)
+            types.append((written, attrs.get("base_class_type", "")))
 
     def end(tag: str) -> None:
         depth[0] -= 1

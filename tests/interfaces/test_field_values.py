@@ -35,6 +35,9 @@ ACCEPTED = [
     # not judged: values of classes that are neither messages nor modelled
     ("std_msgs/Header", instance("mylib.Header")), ("float64", instance("numpy.float64")),
     ("float64", ValueShape("other")), ("float64[]", ValueShape("sequence", "list")),
+    # a class of the same name from another package's msg module may be a re-export
+    # (bosdyn_msgs.msg does `from bosdyn_api_msgs.msg import *`)
+    ("bosdyn_api_msgs/RobotCommandFeedback", instance("bosdyn_msgs.msg.RobotCommandFeedback")),
 ]
 
 REJECTED = [

@@ -265,7 +265,7 @@ class CallSemantics:
         Their effects belong to a task of their own, ``("framework", module, (class,))``:
         no task of the workspace runs that code."""
         klass = self.program.classes[cid]
-        for lib_cls in self.library_bases(cid):
+        for lib_cls in [*self.library_bases(cid), *self._registered_base(cid)]:
             model = self.lib.classes.get(lib_cls)
             if model is None or not model.entry_args:
                 continue
@@ -287,6 +287,16 @@ class CallSemantics:
                 self.frame = outer
             return out
         return []
+
+    def _registered_base(self, cid: int) -> list[str]:
+        """The modelled class the registration of class ``cid`` names as the base of what it
+        registers (an rqt plugin whose Python base is qt_gui's ``Plugin``, registered as an
+        ``rqt_gui_py::Plugin``, is built by rqt_gui_py with its ROS 2 context)."""
+        klass = self.program.classes[cid]
+        written = getattr(self.an.framework_classes, "base_types", {}).get(
+            f"{klass.module.name}.{klass.qualname}")
+        found = self.lib.registered_base(written) if written else None
+        return [*self.lib.mro(found)] if found else []
 
     def _site(self, node) -> str:
         """The allocation site of an object created at ``node``: the source position, plus

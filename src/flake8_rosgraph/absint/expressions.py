@@ -233,8 +233,12 @@ class ExpressionSemantics:
         return self.eval(node.value)
 
     def e_Yield(self, node: ast.Yield) -> Value:
-        if node.value is not None:
-            self.eval(node.value)
+        """What the generator yields is kept per function (``("yield", fid)``): a framework
+        that takes a generator's first value (a pytest fixture) reads it there."""
+        value = self.eval(node.value) if node.value is not None else const(None)
+        func = self.frame.func
+        if func is not None and isinstance(node, ast.Yield):
+            self.an.write(("yield", func.fid), value)
         return TOP
 
     e_YieldFrom = e_Yield

@@ -23,6 +23,7 @@ from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, M
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
+from .fixtures import Fixtures
 from .instances import InstanceFacts
 from .objects import ObjectSemantics
 
@@ -47,6 +48,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
         self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
+        self.fixtures = Fixtures(self.program)
 
     # =====================================================================================
     # tasks and CFGs
@@ -55,13 +57,18 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if task[0] == "mod":
             module = self.program.ensure(task[1])
             if module is None:  # too deeply nested to walk: reported by the program
-                return BOTTOM, {}
+                return BOTTOM, {}, {}, False
             frame = Frame(task, module)
             env: Env = {}
         else:
             func = self.program.functions[task[1]]
             frame = Frame(task, func.module, func)
             env = dict(zip(self.param_names(func), task[2]))
+            for name, fixture in self.fixtures.arguments(func).items():
+                if env[name].is_top:
+                    env[name] = self.fixture_value(fixture, task)
+                    if env[name].is_bottom:
+                        return BOTTOM, {}, {}, False  # pytest runs it once the fixture is set up
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame
@@ -78,6 +85,19 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if frame.func is not None and frame.func.is_generator:
             ret = TOP
         return ret, frame.effects, frame.calls, frame.falls_off
+
+    def fixture_value(self, fid: int, reader: Task) -> Value:
+        """What pytest passes for the fixture function ``fid``: what it yields (a generator)
+        or returns, in the task pytest runs it in (its own fixtures bound the same way).
+        Nothing (⊥) until that task has produced it: ``reader`` waits, as pytest runs no
+        test whose fixture is not set up, and re-runs once the value exists (running it with
+        an unknown value first would spend the contexts of the helpers it calls); unknown if
+        the budget abandoned that task."""
+        func = self.program.functions[fid]
+        task = self.an.function_task(fid, self.default_context(fid, None))
+        self.an.schedule(task)
+        value = self.an.read(("yield", fid) if func.is_generator else ("ret", task), reader)
+        return TOP if value.is_bottom and task in self.an.abandoned else value
 
     @staticmethod
     def _cfg_of(frame: Frame) -> CFG:
@@ -391,7 +411,16 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     self.program.closure_owner(func.fid, name)
                 if owner is not None:
                     return self.an.read(("c", owner, name), frame.task)
+            if name == "__class__":
+                return self._defining_class(func)
         return self.load_global(frame.module, name)
+
+    def _defining_class(self, func) -> Value:
+        """``__class__`` in a method (or a function nested in one): the class whose body
+        defines the method — the implicit cell ``super()`` uses, whatever ``self`` is."""
+        while func is not None and func.cls is None:
+            func = self.program.functions[func.parent] if func.parent is not None else None
+        return atoms([ClassAtom(func.cls)]) if func is not None else TOP
 
     def load_global(self, module: Module, name: str) -> Value:
         self.program.ensure(module.name)

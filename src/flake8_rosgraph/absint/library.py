@@ -204,6 +204,10 @@ class ClassModel:
     #: Classes the framework constructs (their ``__init__`` applied with no arguments) and
     #: passes, positionally, when it instantiates a user subclass (an rqt plugin's context).
     entry_args: tuple[str, ...] = ()
+    #: Names a plugin registration gives this class by (``rqt_gui_py::Plugin`` in a
+    #: ``plugin.xml`` ``base_class_type``): the framework behind it builds the classes
+    #: registered so, whatever their Python base (see :meth:`LibraryModel.registered_base`).
+    registered_as: tuple[str, ...] = ()
 
 
 #: Kinds a stand-in method's argument may be required to have: a class (a message type),
@@ -318,6 +322,12 @@ class LibraryModel:
     def class_flag(self, cls_qualname: str, flag: str) -> bool:
         return any(getattr(self.classes.get(c), flag, False) for c in self.mro(cls_qualname))
 
+    def registered_base(self, written: str) -> str | None:
+        """The modelled class a registration names by ``written`` (its ``registered_as``), the
+        first by name if several claim it."""
+        return next((name for name in sorted(self.classes)
+                     if written in self.classes[name].registered_as), None)
+
     def called_methods(self, cls_qualname: str) -> tuple[str, ...]:
         out: list[str] = []
         for cls in self.mro(cls_qualname):
@@ -330,7 +340,7 @@ class LibraryModel:
 # -- loading ----------------------------------------------------------------------------
 _FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "blocking", "blocks_for"}
 _CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods", "stand_in_for_unresolved",
-               "entry_args"}
+               "entry_args", "registered_as"}
 _TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta"}
 
 
@@ -435,7 +445,8 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
                       _strings(raw.get("calls_methods", []), where + ".calls_methods"),
                       _stand_ins(qualname, raw.get("stand_in_for_unresolved", {}),
                                  where + ".stand_in_for_unresolved"),
-                      _strings(raw.get("entry_args", []), where + ".entry_args"))
+                      _strings(raw.get("entry_args", []), where + ".entry_args"),
+                      _strings(raw.get("registered_as", []), where + ".registered_as"))
 
 
 def _stand_ins(owner: str, raw: Any, where: str) -> dict[str, StandIn]:

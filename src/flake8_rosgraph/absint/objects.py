@@ -66,6 +66,10 @@ class ObjectSemantics:
             return field_value.join(found)
         if isinstance(atom, ClassAtom):
             found = self.class_attr(self.mro(atom), attr, None)
+            if found is None and attr in _NAME_ATTRS:
+                klass = self.program.classes[atom.cid]
+                return const({"__module__": klass.module.name, "__name__": klass.node.name,
+                              "__qualname__": klass.qualname}[attr])
             return TOP if found is None else found
         if isinstance(atom, SuperAtom):
             cls_of = atom.receiver.cls if isinstance(atom.receiver, Obj) else atom.receiver

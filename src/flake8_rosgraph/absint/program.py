@@ -129,9 +129,12 @@ class Program:
         self._in_folder: dict[tuple[str, str], str] = {}
         #: First components of the workspace's module names.
         self._tops: set[str] = set()
+        #: Package name -> its folder (``pkg`` -> ``src/pkg``), for namespace folders inside it.
+        self._package_folder: dict[str, str] = {}
         for mod in self.modules.values():
             folder, _, file = mod.path.rpartition("/")
             if mod.is_package:
+                self._package_folder.setdefault(mod.name, folder)
                 folder, _, file = folder.rpartition("/")
             elif file.endswith(".py"):
                 file = file[:-3]
@@ -358,7 +361,26 @@ class Program:
         return base
 
     def absolute_import(self, mod: Module, name: str) -> str:
-        """The module name ``import <name>`` reaches from ``mod``.
+        """The module name ``import <name>`` reaches from ``mod`` (see :meth:`_from_sys_path`),
+        or else the module in a folder without ``__init__.py`` inside a package: Python makes
+        such a folder a namespace package under the package (``backend.ws.base_ws`` is
+        ``backend/ws/base_ws.py`` beside ``backend/__init__.py``), which the workspace's
+        module names (they stop at a folder without ``__init__.py``) do not spell."""
+        found = self._from_sys_path(mod, name)
+        if found in self.modules:
+            return found
+        return self._inside_package(name) or found
+
+    def _inside_package(self, name: str) -> str | None:
+        parts = name.split(".")
+        for cut in range(len(parts) - 2, 0, -1):
+            folder = self._package_folder.get(".".join(parts[:cut]))
+            if folder is not None:
+                return self._in_folder.get(("/".join([folder, *parts[cut:-1]]), parts[-1]))
+        return None
+
+    def _from_sys_path(self, mod: Module, name: str) -> str:
+        """The module name ``import <name>`` reaches from ``mod`` through ``sys.path``.
 
         A file run as a program has its own folder first on ``sys.path``: ``import helper``
         there reaches ``helper.py`` beside it (scripts installed together, a node importing

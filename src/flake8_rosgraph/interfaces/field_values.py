@@ -68,12 +68,20 @@ def _instance_is_known(shape: Any) -> bool:
     return message_key(shape.cls) is not None or shape.modelled
 
 
+def _may_be_reexport(key: str | None, base: str) -> bool:
+    """Whether a message class of another package but the same name may be the field's own
+    class, re-exported: a package's ``msg`` module can import another's classes
+    (bosdyn_msgs.msg does ``from bosdyn_api_msgs.msg import *``), and the class keeps its name."""
+    return key is not None and key.rsplit("/", 1)[-1] == base.rsplit("/", 1)[-1] \
+        and key.split("/", 1)[0] != base.split("/", 1)[0]
+
+
 def _scalar_rejection(ftype: FieldType, shape: Any) -> str | None:
     kind, base = shape.kind, ftype.base
     if kind == "instance":
         if ftype.is_message:
             key = message_key(shape.cls)
-            if key == base or not _instance_is_known(shape):
+            if key == base or not _instance_is_known(shape) or _may_be_reexport(key, base):
                 return None
             return describe(shape)
         return describe(shape) if _instance_is_known(shape) else None

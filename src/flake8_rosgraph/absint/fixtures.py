@@ -1,0 +1,131 @@
+"""pytest's fixtures: the values pytest passes to the functions it calls itself.
+
+pytest calls the ``test*`` functions of a test module (``test_*.py``, ``*_test.py``) and
+the fixtures they need: for each parameter it passes the value of the fixture of that
+name, the function decorated with ``@pytest.fixture`` (or ``fixture`` imported from
+pytest; ``name=`` renames it) — what it returns or, for a generator fixture, what it
+yields. A fixture is looked up in the test's own module first, then in the ``conftest.py``
+of its folder and of each folder above. A parameter that ``@pytest.mark.parametrize``
+names gets the listed values instead, and a name no fixture of the workspace defines (a
+plugin's, pytest's own ``request``) stays unknown.
+
+This module only finds, syntactically, which fixture function each parameter names; the
+interpreter reads the fixture's value from the heap, and runs the test only once every
+fixture it takes has a value (see ``Interpreter.run_task``, ``Interpreter.fixture_value``).
+"""
+from __future__ import annotations
+
+import ast
+import posixpath
+
+from .program import Function, Module, Program
+
+#: Files pytest collects tests from, and the files that share fixtures with a folder.
+CONFTEST = "conftest.py"
+
+
+def _is_test_file(path: str) -> bool:
+    name = posixpath.basename(path)
+    return name == CONFTEST or (name.endswith(".py") and (
+        name.startswith("test_") or name[:-3].endswith("_test")))
+
+
+class Fixtures:
+    """Which workspace fixture function each parameter of a pytest-called function names."""
+
+    def __init__(self, program: Program) -> None:
+        self.program = program
+        self._by_path: dict[str, str] | None = None       # module path -> module name
+        self._defined: dict[str, dict[str, int]] = {}     # module name -> fixture name -> fid
+        self._visible: dict[str, dict[str, int]] = {}     # module name -> fixtures it sees
+
+    def arguments(self, func: Function) -> dict[str, int]:
+        """Parameter name -> fid of the fixture pytest passes for it, for a function pytest
+        calls (a module-level ``test*`` function or fixture of a test file); empty otherwise."""
+        if func.parent is not None or func.cls is not None or isinstance(func.node, ast.Lambda) \
+                or not _is_test_file(func.module.path):
+            return {}
+        visible = self._visible_in(func.module)
+        if not (func.node.name.startswith("test") or func.fid in visible.values()):
+            return {}
+        a = func.node.args
+        params = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
+        given = _parametrized(func.node)
+        return {name: visible[name] for name in params if name in visible and name not in given}
+
+    def _visible_in(self, module: Module) -> dict[str, int]:
+        known = self._visible.get(module.name)
+        if known is None:
+            known = {}
+            folder = posixpath.dirname(module.path)
+            chain = [module.name]
+            while True:
+                conftest = self._module_at(posixpath.join(folder, CONFTEST) if folder else CONFTEST)
+                if conftest is not None and conftest not in chain:
+                    chain.append(conftest)
+                if not folder:
+                    break
+                folder = posixpath.dirname(folder)
+            for name in reversed(chain):  # the nearest definition wins
+                known.update(self._defined_in(name))
+            self._visible[module.name] = known
+        return known
+
+    def _module_at(self, path: str) -> str | None:
+        if self._by_path is None:
+            self._by_path = {m.path: m.name for m in self.program.modules.values()}
+        return self._by_path.get(path)
+
+    def _defined_in(self, name: str) -> dict[str, int]:
+        known = self._defined.get(name)
+        if known is None:
+            known = {}
+            module = self.program.ensure(name)
+            for node in module.tree.body if module is not None else ():
+                if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    fixture = _fixture_name(node, module)
+                    fid = self.program.fid_of.get(id(node))
+                    if fixture is not None and fid is not None:
+                        known[fixture] = fid
+            self._defined[name] = known
+        return known
+
+
+def _fixture_name(node: ast.FunctionDef | ast.AsyncFunctionDef, module: Module) -> str | None:
+    """The name a ``@pytest.fixture`` decorator gives the function, else ``None``."""
+    for decorator in node.decorator_list:
+        call = decorator if isinstance(decorator, ast.Call) else None
+        target = call.func if call is not None else decorator
+        if _names_pytest_fixture(target, module):
+            for kw in call.keywords if call is not None else ():
+                if kw.arg == "name" and isinstance(kw.value, ast.Constant) \
+                        and isinstance(kw.value.value, str):
+                    return kw.value.value
+            return node.name
+    return None
+
+
+def _names_pytest_fixture(expr: ast.expr, module: Module) -> bool:
+    if isinstance(expr, ast.Attribute):
+        return expr.attr == "fixture" and isinstance(expr.value, ast.Name) \
+            and expr.value.id == "pytest"
+    if isinstance(expr, ast.Name):
+        return any(isinstance(stmt, ast.ImportFrom) and stmt.module == "pytest" and any(
+            alias.name == "fixture" and (alias.asname or alias.name) == expr.id
+            for alias in stmt.names) for stmt in module.tree.body)
+    return False
+
+
+def _parametrized(node: ast.FunctionDef | ast.AsyncFunctionDef) -> frozenset[str]:
+    """Parameters ``@pytest.mark.parametrize("a, b", …)`` gives values to."""
+    names: set[str] = set()
+    for decorator in node.decorator_list:
+        if isinstance(decorator, ast.Call) and isinstance(decorator.func, ast.Attribute) \
+                and decorator.func.attr == "parametrize" and decorator.args:
+            first = decorator.args[0]
+            if isinstance(first, ast.Constant) and isinstance(first.value, str):
+                names.update(n.strip() for n in first.value.split(","))
+            elif isinstance(first, (ast.List, ast.Tuple)):
+                names.update(e.value for e in first.elts
+                             if isinstance(e, ast.Constant) and isinstance(e.value, str))
+    return frozenset(names)
