@@ -249,3 +249,40 @@ def test_what_the_format_cannot_hold_is_refused() -> None:
         facts_json.from_obj({"c": "os.system", "v": ["true"]})
     with pytest.raises(facts_json.NotAFact):
         facts_json.from_obj({"c": "graph.model.Location", "v": ["a.py", 1]})
+
+
+def test_metadata_is_read_again_only_when_a_metadata_file_changes(root: Path, monkeypatch) -> None:
+    import flake8_rosgraph.analysis as analysis_module
+    reads = []
+    original = analysis_module.read_metadata
+    monkeypatch.setattr(analysis_module, "read_metadata", lambda at: reads.append(at) or original(at))
+    assert _report(root) == [] and len(reads) == 1
+
+    monitor = root / "nav/nav/monitor.py"
+    monitor.write_text(monitor.read_text() + "\n# a Python edit\n")
+    assert _report(root) == [] and len(reads) == 1  # packages, registrations, launch files kept
+
+    setup = root / "sensors/setup.py"  # metadata, though Python: its executables
+    setup.write_text(setup.read_text().replace("'lidar_driver = ", "'lidar_node = "))
+    found = _report(root)
+    assert len(reads) == 2
+    assert [(path, line, code) for path, line, code, _ in found] == [("bringup/launch/robot.launch.py", 7, "ROS201")]
+    assert "lidar_node" in found[0][3]
+
+
+def test_an_edit_to_a_script_without_suffix_is_seen(root: Path) -> None:
+    """ROS packages install extension-less Python programs (a shebang): the cache must key on them."""
+    write(root, {"nav/scripts/scan_logger": """
+        #!/usr/bin/env python3
+        import rclpy
+        from sensor_msgs.msg import LaserScan
+
+        rclpy.init()
+        node = rclpy.create_node('scan_logger')
+        node.create_subscription(LaserScan, '/scan', print, 10)
+        rclpy.spin(node)
+    """})
+    assert _report(root) == []
+    script = root / "nav/scripts/scan_logger"
+    script.write_text(script.read_text().replace("'/scan'", "'/scna'"))
+    assert [(path, code) for path, _, code, _ in _report(root)] == [("nav/scripts/scan_logger", "ROS003")]

@@ -24,13 +24,12 @@ from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
 from .escaping import escape_text
-from .graph.model import Diagnostic, RosGraph, RosNode
+from .graph.model import Diagnostic, RosGraph, RosNode, internal_error
 from .interfaces.catalogue import generated_class_identity
-from .launch.packages import PackageIndex, find_packages
 from .launch.targets import entry_key, runs_module
+from .metadata import WorkspaceMetadata, read_metadata
 from .options import Buffers
 from .python_facts import PythonFacts, facts_of, merged
-from .registrations import registered_classes
 from .safe_io import read_text
 from .workspace import load_workspace
 
@@ -58,18 +57,18 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     return library, diagnostics
 
 
-def _launch_systems(root: Path, graph: RosGraph, python: PythonFacts, packages: PackageIndex,
+def _launch_systems(root: Path, graph: RosGraph, python: PythonFacts, metadata: WorkspaceMetadata,
                     diagnostics: list[Diagnostic]) -> list:
     """The workspace's launch systems; a failure here must not cost the code-level graph."""
     from .launch.api import systems_for
     try:
         if not root.is_dir():  # one file given: its Python launch description, nothing around it walked
             return systems_for(root.parent, graph, python.launches, python.targets, diagnostics,
-                               walk=False, packages=packages)
-        return systems_for(root, graph, python.launches, python.targets, diagnostics, packages=packages)
+                               walk=False, packages=metadata.packages, frontend=[])
+        return systems_for(root, graph, python.launches, python.targets, diagnostics,
+                           packages=metadata.packages, frontend=metadata.launch_files)
     except Exception as exc:
-        diagnostics.append(Diagnostic("", 0, f"launch files not analysed: internal error: "
-                                              f"{type(exc).__name__}: {exc}", "error"))
+        diagnostics.append(internal_error("launch files not analysed", exc))
         return []
 
 
@@ -83,8 +82,7 @@ def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo:
     try:
         nodes, cpp_diagnostics = memo(lambda: cpp_graph(root)) if memo is not None else cpp_graph(root)
     except Exception as exc:
-        diagnostics.append(Diagnostic("", 0, f"C++ sources not read: internal error: "
-                                              f"{type(exc).__name__}: {exc}", "error"))
+        diagnostics.append(internal_error("C++ sources not read", exc))
         return
     diagnostics.extend(cpp_diagnostics)
     graph.nodes = sorted(graph.nodes + nodes, key=lambda n: (n.fqn or "", n.location, n.language))
@@ -99,22 +97,7 @@ def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
         diagnostics.extend(Diagnostic(path, 1, why) for path, why in graph.interfaces.problems)
     except Exception as exc:
         graph.interfaces = None
-        diagnostics.append(Diagnostic("", 0, f"interface definitions not read: internal error: "
-                                              f"{type(exc).__name__}: {exc}", "error"))
-
-
-def _packages(root: Path, diagnostics: list[Diagnostic]) -> PackageIndex:
-    """The workspace's packages (none around a single file); a failure costs the packages only."""
-    if not root.is_dir():
-        return PackageIndex()
-    try:
-        packages = find_packages(root)
-    except Exception as exc:
-        diagnostics.append(Diagnostic("", 0, f"packages not read: internal error: "
-                                              f"{type(exc).__name__}: {exc}", "error"))
-        return PackageIndex()
-    diagnostics.extend(packages.diagnostics)
-    return packages
+        diagnostics.append(internal_error("interface definitions not read", exc))
 
 
 @contextlib.contextmanager
@@ -136,15 +119,17 @@ def collector_paused():
 
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
                 interface_dirs: Sequence[Path] = (), buffers: Buffers = (),
-                cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None) -> RosGraph:
+                cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None,
+                metadata_memo: MetadataMemo | None = None) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
-    ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``, ``facts_memo``:
-    where the C++ ends of an unchanged C++ tree and the facts of unchanged groups of Python
-    modules are kept between runs (the cache)."""
+    ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``, ``facts_memo``,
+    ``metadata_memo``: where the C++ ends of an unchanged C++ tree, the facts of unchanged groups
+    of Python modules and unchanged metadata are kept between runs (the cache)."""
     with collector_paused():
-        return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo, facts_memo)
+        return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo, facts_memo,
+                            metadata_memo)
 
 
 def analyse(root: Path, stub_files: Sequence[Path] = (),
@@ -157,22 +142,24 @@ def analyse(root: Path, stub_files: Sequence[Path] = (),
     return graph, analyses
 
 
+#: Keeps the workspace's metadata between runs: given how to read it, returns it (stored or read).
+MetadataMemo = Callable[[Callable[[], WorkspaceMetadata]], WorkspaceMetadata]
+
 #: Keeps the facts of a group of modules between runs: given what identifies the group's inputs
 #: and how to compute its facts, returns them (stored or computed, then stored).
 FactsMemo = Callable[[str, Callable[[], PythonFacts]], PythonFacts]
 
 
-def _group_facts(program: Program, library: LibraryModel, registered: frozenset[str],
-                 packages: PackageIndex, memo: FactsMemo | None,
+def _group_facts(program: Program, library: LibraryModel, metadata: WorkspaceMetadata, memo: FactsMemo | None,
                  kept: list[Analysis] | None) -> PythonFacts:
     """The facts of one group of modules (``program``), analysed on its own or kept from before;
     an internal error costs this group's facts only."""
     paths = {m.path for m in program.modules.values()}
-    executables = sorted((exe for package in packages.packages.values()
+    executables = sorted((exe for package in metadata.packages.packages.values()
                           for exe in package.executables.values()
                           if exe.language == "python" and runs_module(exe, program.modules, paths)),
                          key=entry_key)
-    framework = frozenset(c for c in registered if c.rpartition(".")[0] in program.modules)
+    framework = {c: base for c, base in metadata.registered.items() if c.rpartition(".")[0] in program.modules}
 
     def compute() -> PythonFacts:
         analysis = Analysis(program, library, framework_classes=framework)
@@ -189,7 +176,7 @@ def _group_facts(program: Program, library: LibraryModel, registered: frozenset[
             return compute()
         inputs = json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
                               for m in program.modules.values()],
-                             sorted(framework), [entry_key(exe) for exe in executables]])
+                             sorted(framework.items()), [entry_key(exe) for exe in executables]])
         return memo(inputs, compute)
     except Exception as exc:
         first = min(paths, default="")
@@ -202,7 +189,7 @@ def _group_facts(program: Program, library: LibraryModel, registered: frozenset[
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
                  buffers: Buffers, cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None,
-                 kept: list[Analysis] | None = None) -> RosGraph:
+                 metadata_memo: MetadataMemo | None = None, kept: list[Analysis] | None = None) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
@@ -210,15 +197,15 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         workspace = load_workspace(root, buffers)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
-        registered, registry_diags = registered_classes(root) if root.is_dir() else (frozenset(), [])
-        diagnostics.extend(registry_diags)
-        packages = _packages(root, diagnostics)
-        python = merged([_group_facts(program.part(names), library, registered, packages, facts_memo, kept)
+        metadata = metadata_memo(lambda: read_metadata(root)) if metadata_memo is not None \
+            else read_metadata(root)
+        diagnostics.extend(metadata.diagnostics)
+        python = merged([_group_facts(program.part(names), library, metadata, facts_memo, kept)
                          for names in program.components()])
         diagnostics.extend(python.diagnostics)
         graph = RosGraph(nodes=python.nodes, usage=python.usage, messages=python.messages)
         _cpp_nodes(root, graph, diagnostics, cpp_memo)
-        graph.systems = _launch_systems(root, graph, python, packages, diagnostics)
+        graph.systems = _launch_systems(root, graph, python, metadata, diagnostics)
         _interfaces(root, interface_dirs, graph, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]

@@ -68,6 +68,8 @@ KEEP_ENTRIES = 16
 #: Largest entry written or read: with :data:`KEEP_ENTRIES`, what the cache may take on disk.
 MAX_ENTRY_BYTES = 16 * 1024 * 1024
 
+#: Version of the metadata entry (:func:`metadata_key`); bump it when the metadata changes shape.
+METADATA_FORMAT = 1
 #: The digests of the workspace's inputs from earlier runs (see :class:`InputDigests`).
 INPUT_INDEX = "inputs.json"
 INPUT_INDEX_FORMAT = 1
@@ -137,8 +139,9 @@ def workspace_inputs(root: Path) -> list[Path]:
     found: list[Path] = []
     for directory, dirnames, filenames in os.walk(root):
         dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS]
+        # A name without a dot may be a Python program (a shebang, an installed script).
         found += [Path(directory, name) for name in filenames
-                  if Path(name).suffix in _INPUT_SUFFIXES or name in _INPUT_NAMES]
+                  if Path(name).suffix in _INPUT_SUFFIXES or name in _INPUT_NAMES or "." not in name]
     return sorted(found, key=lambda p: _encoded(p.relative_to(root).as_posix()))
 
 
@@ -245,19 +248,58 @@ def _cpp_memo(cache_dir: Path, secret: bytes, key: str) -> Callable:
     """A memo for :func:`.analysis.build_graph`: the C++ ends stored under ``key``, or read and stored."""
     from .cpp import memo as cpp_memo
 
+    return _json_memo(cache_dir, secret, key, "ends", lambda found: cpp_memo.to_obj(*found), cpp_memo.from_obj)
+
+
+def metadata_key(digests: InputDigests) -> str:
+    """The key of the workspace's metadata (:mod:`.metadata`): every input but the content of
+    Python modules — their paths count (a script's presence), and ``setup.py`` is metadata."""
+    digest = hashlib.sha256(f"rosgraph-metadata/{METADATA_FORMAT}\0{tool_fingerprint()}".encode())
+    for rel in sorted(digests.current, key=_encoded):
+        name = rel.rsplit("/", 1)[-1]
+        content = digests.current[rel] if not name.endswith(".py") or name == "setup.py" else ""
+        digest.update(_encoded(f"\0{rel}\0{content}"))
+    return digest.hexdigest()
+
+
+def _metadata_memo(cache_dir: Path, secret: bytes, key: str) -> Callable:
+    """A memo for :func:`.analysis.build_graph`: the workspace's metadata stored under ``key``, or read and stored."""
+    from . import facts_json
+    from .metadata import WorkspaceMetadata
+
+    def decode(obj: Any) -> Any:
+        metadata = facts_json.from_obj(obj)
+        if not isinstance(metadata, WorkspaceMetadata):
+            raise ValueError("not the workspace's metadata")
+        return metadata
+
+    return _json_memo(cache_dir, secret, key, "metadata", facts_json.to_obj, decode)
+
+
+def _json_memo(cache_dir: Path, secret: bytes, key: str, name: str,
+               encode: Callable[[Any], Any], decode: Callable[[Any], Any]) -> Callable:
+    """A memo of what ``read`` returns, stored as ``name`` in the signed entry ``<key>.json``:
+    read back when the entry is this user's and whole, else read anew and stored (when
+    ``encode`` can say it: a :class:`ValueError` there only costs the storing)."""
     entry = cache_dir / f"{key}.json"
 
-    def memo(read: Callable[[], tuple[list, list[Diagnostic]]]) -> tuple[list, list[Diagnostic]]:
+    def memo(read: Callable[[], Any]) -> Any:
         try:
             obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
             signature = obj.pop("signature", None) if isinstance(obj, dict) else None
             if isinstance(signature, str) and obj.get("key") == key \
                     and hmac.compare_digest(signature, _signature(secret, obj)):
-                return cpp_memo.from_obj(obj["ends"])
+                kept = decode(obj[name])
+                with contextlib.suppress(OSError):
+                    os.utime(entry)  # recently used: the pruning keeps it
+                return kept
         except (OSError, ValueError, KeyError, TypeError, RecursionError):
             pass  # missing, corrupt or foreign: read the sources
         found = read()
-        obj = {"key": key, "ends": cpp_memo.to_obj(*found)}
+        try:
+            obj = {"key": key, name: encode(found)}
+        except ValueError:
+            return found
         obj["signature"] = _signature(secret, obj)
         text = json.dumps(obj, sort_keys=True, ensure_ascii=True)
         if len(text) <= MAX_ENTRY_BYTES and _own_dir(cache_dir):
@@ -579,17 +621,19 @@ else:
 # -- the analysis ----------------------------------------------------------------------------
 
 def build_report(root: Path, settings: Settings, buffers: Buffers = (),
-                 cpp_ends: Callable | None = None, groups: Callable | None = None) -> WorkspaceReport:
+                 cpp_ends: Callable | None = None, groups: Callable | None = None,
+                 metadata: Callable | None = None) -> WorkspaceReport:
     """Analyse ``root`` and run every rule, uncached but for the C++ ends (``cpp_ends``, see
-    :func:`_cpp_memo`) and the facts of groups of Python modules (``groups``, see
-    :mod:`.facts_cache`); imports the heavy parts only when needed."""
+    :func:`_cpp_memo`), the facts of groups of Python modules (``groups``, see
+    :mod:`.facts_cache`) and the metadata (``metadata``, see :func:`_metadata_memo`); imports
+    the heavy parts only when needed."""
     from .analysis import build_graph
     from .rules import RULES, run_rules
 
     from .launch.api import judged_graph
 
     graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers, cpp_ends,
-                        groups)
+                        groups, metadata)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
@@ -617,6 +661,7 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     key = cache_key(root, settings, digests)
     digests.store(cache_dir, secret)
     cpp_ends = _cpp_memo(cache_dir, secret, _cpp_key(digests))
+    metadata = _metadata_memo(cache_dir, secret, metadata_key(digests))
     entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
     if cached is not None:
@@ -636,7 +681,7 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
         folder = facts_cache.groups_dir(cache_dir) if _own_dir(cache_dir) else None
         groups = None if folder is None else \
             facts_cache.facts_memo(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
-        report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups)
+        report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups, metadata=metadata)
         if locked:
             with contextlib.suppress(OSError):
                 _write_entry(entry, report, key, secret)

@@ -24,7 +24,7 @@ from typing import Any
 
 #: The modules whose dataclasses are facts (relative to the package).
 FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
-                "python_facts")
+                "launch.packages", "python_facts", "metadata")
 
 
 class NotAFact(ValueError):

@@ -18,7 +18,7 @@ from typing import Sequence
 from .absint.engine import Analysis
 from .graph.builder import build_graph_from
 from .graph.messages import MessageFacts, message_facts
-from .graph.model import Diagnostic, RosNode
+from .graph.model import Diagnostic, RosNode, internal_error
 from .graph.usage import UsageFacts, callback_order
 from .launch.actions import Action
 from .launch.discover import read_python_launches
@@ -55,18 +55,14 @@ def facts_of(analysis: Analysis, executables: Sequence[Executable]) -> PythonFac
     try:
         facts.messages = message_facts(analysis)
     except Exception as exc:
-        facts.diagnostics.append(_internal("message facts not gathered", exc))
+        facts.diagnostics.append(internal_error("message facts not gathered", exc))
     facts.launches = read_python_launches(analysis)
     try:
         reach = EntryReach(analysis)
         facts.targets = {entry_key(exe): reach.python_target(exe) for exe in executables}
     except Exception as exc:
-        facts.diagnostics.append(_internal("executables not tied to their nodes", exc))
+        facts.diagnostics.append(internal_error("executables not tied to their nodes", exc))
     return facts
-
-
-def _internal(what: str, exc: Exception) -> Diagnostic:
-    return Diagnostic("", 0, f"{what}: internal error: {type(exc).__name__}: {exc}", "error")
 
 
 def merged(parts: Sequence[PythonFacts]) -> PythonFacts:

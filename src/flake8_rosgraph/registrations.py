@@ -24,8 +24,8 @@ The result is a set of dotted ``module.Class`` names; a name that is no class of
 workspace (a function, a missing module) is simply never matched. A ``plugin.xml`` class also
 says which framework loads it (``base_class_type="rqt_gui_py::Plugin"``), which its Python
 base need not: rqt plugins commonly derive from ``qt_gui.plugin.Plugin`` and are still built
-by rqt_gui_py's provider, with its ROS 2 context. The set keeps those names
-(:attr:`Registered.base_types`), for the library model to match (``registered_as``).
+by rqt_gui_py's provider, with its ROS 2 context. The result maps each name to that type, for
+the library model to match (``registered_as``).
 """
 from __future__ import annotations
 
@@ -36,8 +36,6 @@ import re
 import sys
 import xml.parsers.expat
 from pathlib import Path
-from types import MappingProxyType
-from typing import Iterable, Mapping
 
 from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
@@ -58,26 +56,11 @@ _PY_MODULE_VAR = re.compile(r"\b(\w+)\s*=\s*" + _IMPORT)
 _PY_ATTR_CALL = re.compile(r'(?:\b(\w+)|' + _IMPORT + r')\s*\.\s*attr\(\s*"([A-Za-z_]\w*)"\s*\)\s*\(')
 
 
-class Registered(frozenset):
-    """The ``module.Class`` names the packages register (a frozenset of them: what the engine
-    matches classes against), with the base class type each ``plugin.xml`` registration writes
-    for its class (``{"pkg.module.Class": "rqt_gui_py::Plugin"}``)."""
-
-    base_types: Mapping[str, str]
-
-    def __new__(cls, names: Iterable[str], base_types: Mapping[str, str]) -> "Registered":
-        made = super().__new__(cls, names)
-        made.base_types = MappingProxyType(dict(sorted(base_types.items())))
-        return made
-
-    def __reduce__(self):
-        return Registered, (sorted(self), dict(self.base_types))
-
-
-def registered_classes(root: Path) -> tuple[Registered, list[Diagnostic]]:
-    """``module.Class`` of every class the packages under ``root`` register with a framework, and
-    a diagnostic per package whose metadata could not be read (it registers nothing then; its
-    code is still analysed)."""
+def registered_classes(root: Path) -> tuple[dict[str, str], list[Diagnostic]]:
+    """``module.Class`` of every class the packages under ``root`` register with a framework,
+    mapped to the base class type its ``plugin.xml`` registration writes (``""`` for none), in
+    name order; and a diagnostic per package whose metadata could not be read (it registers
+    nothing then; its code is still analysed)."""
     found: set[str] = set()
     base_types: dict[str, str] = {}
     diagnostics: list[Diagnostic] = []
@@ -98,7 +81,7 @@ def registered_classes(root: Path) -> tuple[Registered, list[Diagnostic]]:
                                                     f"(entry points, plugin.xml, robot descriptions, pybind11) are "
                                                     f"not known: "
                                                     f"{describe(exc)}"))
-    return Registered(found, base_types), diagnostics
+    return {name: base_types.get(name, "") for name in sorted(found)}, diagnostics
 
 
 def _entry_point_targets(folder: Path, root: Path) -> list[str]:

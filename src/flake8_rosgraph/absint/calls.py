@@ -293,8 +293,7 @@ class CallSemantics:
         registers (an rqt plugin whose Python base is qt_gui's ``Plugin``, registered as an
         ``rqt_gui_py::Plugin``, is built by rqt_gui_py with its ROS 2 context)."""
         klass = self.program.classes[cid]
-        written = getattr(self.an.framework_classes, "base_types", {}).get(
-            f"{klass.module.name}.{klass.qualname}")
+        written = self.an.framework_classes.get(f"{klass.module.name}.{klass.qualname}")
         found = self.lib.registered_base(written) if written else None
         return [*self.lib.mro(found)] if found else []
 

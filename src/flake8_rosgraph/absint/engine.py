@@ -31,7 +31,8 @@ import ast
 import itertools
 from collections import Counter, deque
 from dataclasses import dataclass, field, replace
-from typing import Hashable
+from types import MappingProxyType
+from typing import Hashable, Mapping
 
 from .callgraph import CallGraph
 from .library import LibraryModel
@@ -104,11 +105,12 @@ class Analysis:
     """Runs the whole-program fixpoint and keeps its results (heap, effects, diagnostics)."""
 
     def __init__(self, program: Program, library: LibraryModel, max_task_runs: int | None = None,
-                 every_module_is_entry: bool = False, framework_classes: frozenset[str] = frozenset()):
+                 every_module_is_entry: bool = False, framework_classes: Mapping[str, str] = MappingProxyType({})):
         self.program = program
         self.library = library
         #: ``module.Class`` names some framework instantiates (a plugin registry, a command
-        #: line's entry points): entry points even when no analysed code instantiates them.
+        #: line's entry points): entry points even when no analysed code instantiates them. Each
+        #: maps to the base class type its registration writes (``rqt_gui_py::Plugin``), or "".
         self.framework_classes = framework_classes
         self.heap: dict[Hashable, Value] = {}
         self.readers: dict[Hashable, dict[Task, None]] = {}

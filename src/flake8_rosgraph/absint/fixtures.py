@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ast
 import posixpath
+from typing import Callable
 
 from .program import Function, Module, Program
 
@@ -24,7 +25,7 @@ from .program import Function, Module, Program
 CONFTEST = "conftest.py"
 
 
-def _is_test_file(path: str) -> bool:
+def is_test_file(path: str) -> bool:
     name = posixpath.basename(path)
     return name == CONFTEST or (name.endswith(".py") and (
         name.startswith("test_") or name[:-3].endswith("_test")))
@@ -43,7 +44,7 @@ class Fixtures:
         """Parameter name -> fid of the fixture pytest passes for it, for a function pytest
         calls (a module-level ``test*`` function or fixture of a test file); empty otherwise."""
         if func.parent is not None or func.cls is not None or isinstance(func.node, ast.Lambda) \
-                or not _is_test_file(func.module.path):
+                or not is_test_file(func.module.path):
             return {}
         visible = self._visible_in(func.module)
         if not (func.node.name.startswith("test") or func.fid in visible.values()):
@@ -57,15 +58,8 @@ class Fixtures:
         known = self._visible.get(module.name)
         if known is None:
             known = {}
-            folder = posixpath.dirname(module.path)
-            chain = [module.name]
-            while True:
-                conftest = self._module_at(posixpath.join(folder, CONFTEST) if folder else CONFTEST)
-                if conftest is not None and conftest not in chain:
-                    chain.append(conftest)
-                if not folder:
-                    break
-                folder = posixpath.dirname(folder)
+            chain = [module.name, *(c for c in conftests_seen_from(module.path, self._module_at)
+                                    if c != module.name)]
             for name in reversed(chain):  # the nearest definition wins
                 known.update(self._defined_in(name))
             self._visible[module.name] = known
@@ -89,6 +83,20 @@ class Fixtures:
                         known[fixture] = fid
             self._defined[name] = known
         return known
+
+
+def conftests_seen_from(path: str, module_at: Callable[[str], str | None]) -> list[str]:
+    """The ``conftest.py`` modules whose fixtures a test file at ``path`` sees, nearest first:
+    its folder's, then each folder's above (``module_at``: the module of a path, if any)."""
+    found: list[str] = []
+    folder = posixpath.dirname(path)
+    while True:
+        conftest = module_at(posixpath.join(folder, CONFTEST) if folder else CONFTEST)
+        if conftest is not None and conftest not in found:
+            found.append(conftest)
+        if not folder:
+            return found
+        folder = posixpath.dirname(folder)
 
 
 def _fixture_name(node: ast.FunctionDef | ast.AsyncFunctionDef, module: Module) -> str | None:

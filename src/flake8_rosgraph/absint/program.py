@@ -152,10 +152,12 @@ class Program:
         in order of their first module.
 
         Two modules are in one group when one imports the other, or a package the other's import
-        runs (``import a.b.c`` runs ``a`` and ``a.b``), directly or through others. The analysis
+        runs (``import a.b.c`` runs ``a`` and ``a.b``), or a test file the ``conftest.py`` whose
+        fixtures pytest hands it (:mod:`.fixtures`), directly or through others. The analysis
         of a group reads nothing of another: no global, class, function or object crosses
         between them, so each can be analysed — and its results kept — on its own.
         """
+        from .fixtures import conftests_seen_from, is_test_file
         leader = {name: name for name in self.modules}
 
         def find(name: str) -> str:
@@ -171,6 +173,11 @@ class Program:
                     other = ".".join(parts[:end])
                     if other in leader:
                         leader[find(other)] = find(name)
+        by_path = {module.path: name for name, module in self.modules.items()}
+        for name, module in self.modules.items():
+            if is_test_file(module.path):
+                for conftest in conftests_seen_from(module.path, by_path.get):
+                    leader[find(conftest)] = find(name)
         groups: dict[str, list[str]] = {}
         for name in self.modules:
             groups.setdefault(find(name), []).append(name)
@@ -183,7 +190,7 @@ class Program:
         part = Program.__new__(Program)
         part.modules = {name: self.modules[name] for name in names}
         part.imports = {name: self.imports[name] for name in names}
-        part._in_folder, part._tops = self._in_folder, self._tops
+        part._in_folder, part._tops, part._package_folder = self._in_folder, self._tops, self._package_folder
         part._fresh_tables()
         return part
 

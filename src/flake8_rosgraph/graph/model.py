@@ -138,6 +138,11 @@ class Diagnostic:
     severity: str = "warning"
 
 
+def internal_error(what: str, exc: Exception) -> Diagnostic:
+    """The error diagnostic of a defect of this tool that cost ``what`` (``"packages not read"``)."""
+    return Diagnostic("", 0, f"{what}: internal error: {type(exc).__name__}: {exc}", "error")
+
+
 @dataclass
 class RosGraph:
     """The whole-workspace graph: nodes plus the diagnostics gathered while building it."""

@@ -27,12 +27,13 @@ from .targets import TargetIndex
 def systems_for(root: Path, graph: RosGraph, python: PythonLaunches | None,
                 targets: Mapping[str, ExecutableRef] | None,
                 diagnostics: list[Diagnostic] | None = None, walk: bool = True,
-                packages: PackageIndex | None = None) -> list[System]:
+                packages: PackageIndex | None = None, frontend: list[str] | None = None) -> list[System]:
     """Every launch system under ``root``, one per launch file, in path order.
 
     ``python``: what the analysis read of each Python launch file, ``targets``: where each
     Python executable leads (both ``None`` when the Python code was not analysed);
-    ``packages``: the workspace's packages, when already found.  Each system is executed and
+    ``packages``, ``frontend``: the workspace's packages and XML/YAML launch files, when already
+    found.  Each system is executed and
     instantiated on its own: a failure in one is a problem of that system, never the loss of
     the others.  Files, folders and packages that cannot be read are added to
     ``diagnostics``.  Without ``walk`` (a single file analysed) only the analysed Python
@@ -44,7 +45,8 @@ def systems_for(root: Path, graph: RosGraph, python: PythonLaunches | None,
         packages = find_packages(root) if walk else PackageIndex()
         diagnostics.extend(packages.diagnostics)
     executor = Executor(root, packages, LaunchReader(root, python), TargetIndex(targets, packages).resolve)
-    frontend = frontend_launch_files(root, diagnostics) if walk else []
+    if frontend is None:
+        frontend = frontend_launch_files(root, diagnostics) if walk else []
     files = sorted(set(python or ()) | set(frontend))
     binder = Instantiator(root)
     systems = [_bound(binder, graph, _isolated(lambda: executor.system(path), path)) for path in files]
