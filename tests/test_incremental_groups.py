@@ -286,3 +286,23 @@ def test_an_edit_to_a_script_without_suffix_is_seen(root: Path) -> None:
     script = root / "nav/scripts/scan_logger"
     script.write_text(script.read_text().replace("'/scan'", "'/scna'"))
     assert [(path, code) for path, _, code, _ in _report(root)] == [("nav/scripts/scan_logger", "ROS003")]
+
+
+def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypatch) -> None:
+    import flake8_rosgraph.workspace as workspace_module
+    _report(root)
+    read = []
+    original = workspace_module.read_module
+    monkeypatch.setattr(workspace_module, "read_module",
+                        lambda path, *args, **kwargs: read.append(path) or original(path, *args, **kwargs))
+    topics = root / "nav/nav/topics.py"
+    topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
+    assert [code for _, _, code, _ in _report(root)] == ["ROS003"]
+    # the edited module, and the one of its group the analysis reads (the empty __init__ it never needs)
+    assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
+
+    (root / cache.CACHE_DIR_NAME / cache.OUTLINES).write_text('{"files": {}, "signature": "0"}')
+    read.clear()
+    topics.write_text(topics.read_text().replace("'/scna'", "'/scan'") + "# back\n")
+    assert _report(root) == []  # a foreign outline index: every file is read again, nothing lost
+    assert len(read) == len(list(root.rglob("*.py")))

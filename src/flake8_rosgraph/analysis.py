@@ -31,7 +31,7 @@ from .metadata import WorkspaceMetadata, read_metadata
 from .options import Buffers
 from .python_facts import PythonFacts, facts_of, merged
 from .safe_io import read_text
-from .workspace import load_workspace
+from .workspace import Outlines, load_workspace
 
 
 def builtin_stub_texts() -> list[tuple[str, str]]:
@@ -120,16 +120,17 @@ def collector_paused():
 def build_graph(root: Path, stub_files: Sequence[Path] = (),
                 interface_dirs: Sequence[Path] = (), buffers: Buffers = (),
                 cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None,
-                metadata_memo: MetadataMemo | None = None) -> RosGraph:
+                metadata_memo: MetadataMemo | None = None, outlines: Outlines | None = None) -> RosGraph:
     """The ROS computation graph of the code under ``root`` (Python analysed, C++ partner ends); never raises.
 
     ``interface_dirs``: folders of extra interface packages (``.msg``/``.srv``/``.action``);
     ``buffers``: unsaved editor content that replaces files on disk; ``cpp_memo``, ``facts_memo``,
     ``metadata_memo``: where the C++ ends of an unchanged C++ tree, the facts of unchanged groups
-    of Python modules and unchanged metadata are kept between runs (the cache)."""
+    of Python modules and unchanged metadata are kept between runs (the cache); ``outlines``:
+    what earlier runs learnt of each Python file, so that files whose group is kept are not parsed."""
     with collector_paused():
         return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo, facts_memo,
-                            metadata_memo)
+                            metadata_memo, outlines)
 
 
 def analyse(root: Path, stub_files: Sequence[Path] = (),
@@ -189,12 +190,13 @@ def _group_facts(program: Program, library: LibraryModel, metadata: WorkspaceMet
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
                  buffers: Buffers, cpp_memo: CppMemo | None = None, facts_memo: FactsMemo | None = None,
-                 metadata_memo: MetadataMemo | None = None, kept: list[Analysis] | None = None) -> RosGraph:
+                 metadata_memo: MetadataMemo | None = None, outlines: Outlines | None = None,
+                 kept: list[Analysis] | None = None) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
         library, stub_diags = load_stubs(stub_files)
         diagnostics.extend(stub_diags)
-        workspace = load_workspace(root, buffers)
+        workspace = load_workspace(root, buffers, outlines)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
         metadata = metadata_memo(lambda: read_metadata(root)) if metadata_memo is not None \

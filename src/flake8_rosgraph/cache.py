@@ -48,7 +48,7 @@ import time
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Callable, Iterator
+from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 from . import __version__
 from .cpp import CPP_SUFFIXES
@@ -57,6 +57,9 @@ from .graph.model import Diagnostic, Location
 from .options import Buffers, Settings
 from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, forget_folders, read_bytes
 from .findings import Finding, RuleConfig
+
+if TYPE_CHECKING:
+    from .workspace import Outlines
 
 CACHE_DIR_NAME = ".rosgraph-cache"
 #: Version of the entry layout below; bump it when the layout changes.
@@ -72,6 +75,8 @@ MAX_ENTRY_BYTES = 16 * 1024 * 1024
 METADATA_FORMAT = 1
 #: The digests of the workspace's inputs from earlier runs (see :class:`InputDigests`).
 INPUT_INDEX = "inputs.json"
+#: What earlier runs learnt of each Python file without its tree (see :class:`.workspace.Outlines`).
+OUTLINES = "outlines.json"
 INPUT_INDEX_FORMAT = 1
 #: A file modified this recently may change again unnoticed within the clock's resolution.
 RACY_SECONDS = 2
@@ -622,7 +627,7 @@ else:
 
 def build_report(root: Path, settings: Settings, buffers: Buffers = (),
                  cpp_ends: Callable | None = None, groups: Callable | None = None,
-                 metadata: Callable | None = None) -> WorkspaceReport:
+                 metadata: Callable | None = None, outlines: Outlines | None = None) -> WorkspaceReport:
     """Analyse ``root`` and run every rule, uncached but for the C++ ends (``cpp_ends``, see
     :func:`_cpp_memo`), the facts of groups of Python modules (``groups``, see
     :mod:`.facts_cache`) and the metadata (``metadata``, see :func:`_metadata_memo`); imports
@@ -633,7 +638,7 @@ def build_report(root: Path, settings: Settings, buffers: Buffers = (),
     from .launch.api import judged_graph
 
     graph = build_graph(root, tuple(settings.stub_files), settings.interface_dirs, buffers, cpp_ends,
-                        groups, metadata)
+                        groups, metadata, outlines)
     config = RuleConfig(external_names=frozenset(settings.external_topics))
     # Judged as launched: a topic connected after remapping is connected.
     findings = run_rules(judged_graph(graph, graph.systems), config,
@@ -681,14 +686,42 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
         folder = facts_cache.groups_dir(cache_dir) if _own_dir(cache_dir) else None
         groups = None if folder is None else \
             facts_cache.facts_memo(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
-        report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups, metadata=metadata)
+        from .workspace import Outlines
+        outlines = Outlines(_read_outlines(cache_dir, secret), digests.current) if groups is not None else None
+        report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups, metadata=metadata,
+                              outlines=outlines)
         if locked:
             with contextlib.suppress(OSError):
                 _write_entry(entry, report, key, secret)
                 _prune(entry.parent)
+            if outlines is not None and outlines.used != outlines.known:
+                _write_outlines(cache_dir, secret, outlines.used)
             if folder is not None:
                 facts_cache.prune(folder)
         return report
+
+
+def _read_outlines(cache_dir: Path, secret: bytes) -> dict[str, Any]:
+    """The Python files' outlines earlier runs stored (:class:`.workspace.Outlines`), if trusted."""
+    try:
+        obj = json.loads(read_bytes(cache_dir / OUTLINES, cache_dir, MAX_ENTRY_BYTES).decode("utf-8"))
+        signature = obj.get("signature") if isinstance(obj, dict) else None
+        if isinstance(signature, str) and hmac.compare_digest(signature, _signature(secret, obj)) \
+                and obj.get("context") == tool_fingerprint() and isinstance(obj.get("files"), dict):
+            return obj["files"]
+    except (OSError, ValueError, TypeError, RecursionError):
+        pass  # missing, corrupt or foreign: every file is parsed
+    return {}
+
+
+def _write_outlines(cache_dir: Path, secret: bytes, outlines: dict[str, Any]) -> None:
+    """Store this run's outlines (its files only: the index stays the workspace's size)."""
+    obj: dict[str, Any] = {"context": tool_fingerprint(), "files": outlines}
+    obj["signature"] = _signature(secret, obj)
+    text = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    if len(text) <= MAX_ENTRY_BYTES and _own_dir(cache_dir):
+        with contextlib.suppress(OSError):
+            _replace_with(cache_dir / OUTLINES, text)
 
 
 def _unsaved_report(root: Path, settings: Settings, buffers: Buffers) -> WorkspaceReport:

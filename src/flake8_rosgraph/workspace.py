@@ -16,10 +16,11 @@ import os
 import re
 import sys
 import tokenize
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any, Mapping
 
-from .absint.program import Module
+from .absint.program import Module, import_statements
 from .graph.model import Diagnostic
 from .options import Buffers
 from .cmake import cmake_commands
@@ -259,13 +260,75 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None,
         number: line for number, line in enumerate(_LINE_BREAKS.split(text), 1) if not line.isascii()}
     first = text.split("\n", 1)[0]
     program = first.startswith("#!") and "python" in first
-    return Module(name, rel, tree, wide, is_package, program, digest=hashlib.sha256(data).hexdigest())
+    return Module(name, rel, tree, wide, is_package, program, digest=hashlib.sha256(data).hexdigest(),
+                  imports=import_statements(tree))
 
 
-def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
+@dataclass
+class Outlines:
+    """What earlier runs learnt of each Python file that parsed, by content digest: its import
+    statements and whether it is a program (``["ok", program, statements]``, as JSON).
+
+    With the digests the cache key computed (:class:`.cache.InputDigests`, by file identity), a
+    file whose outline is known is made into a module without being read or parsed: only the
+    groups of modules that must be analysed again read theirs (:attr:`.Module.source`).
+    """
+
+    known: dict[str, Any]
+    #: This run's digest of each root-relative path (the cache key's).
+    digests: Mapping[str, str]
+    #: The outlines of this run's files: what the cache keeps for the next run.
+    used: dict[str, Any] = field(default_factory=dict)
+
+    def module(self, path: Path, root: Path, package_memo: dict[Path, bool]) -> Module | None:
+        """The module of ``path`` made from its outline, ``None`` when there is none to trust."""
+        rel = relative(path, root)
+        digest = self.digests.get(rel)
+        outline = self.known.get(digest) if digest is not None else None
+        statements = _statements(outline)
+        if statements is None:
+            return None
+        self.used[digest] = outline
+        name, is_package = module_name(path, root if root.is_dir() else root.parent, package_memo)
+        return Module(name, rel, None, {}, is_package, outline[1], digest=digest, imports=statements,
+                      source=functools.partial(_parse_again, path, root))
+
+    def learn(self, module: Module) -> None:
+        self.used[module.digest] = ["ok", module.program, [list(s) for s in module.imports]]
+
+
+def _statements(outline: Any) -> tuple | None:
+    """The import statements of a well-formed outline, else ``None``."""
+    if not (isinstance(outline, list) and len(outline) == 3 and outline[0] == "ok"
+            and isinstance(outline[1], bool) and isinstance(outline[2], list)):
+        return None
+    out = []
+    for item in outline[2]:
+        if isinstance(item, list) and len(item) == 2 and item[0] == "import" and isinstance(item[1], str):
+            out.append(("import", item[1]))
+        elif isinstance(item, list) and len(item) == 4 and item[0] == "from" \
+                and (item[1] is None or isinstance(item[1], str)) and isinstance(item[2], int) \
+                and isinstance(item[3], list) and all(isinstance(n, str) for n in item[3]):
+            out.append(("from", item[1], item[2], tuple(item[3])))
+        else:
+            return None
+    return tuple(out)
+
+
+def _parse_again(path: Path, root: Path) -> tuple[ast.Module, dict[int, str]]:
+    """The tree of a module made from its outline, when its group is analysed after all (a file
+    that no longer reads or parses — changed since the key was taken — is an empty module)."""
+    found = read_module(path, root)
+    if isinstance(found, Diagnostic):
+        return ast.Module(body=[], type_ignores=[]), {}
+    return found.tree, found.wide_lines
+
+
+def load_workspace(root: Path, buffers: Buffers = (), outlines: Outlines | None = None) -> Workspace:
     """Read every Python file under ``root``; unique module names (duplicates get a path-based one).
 
-    ``buffers`` replace the content of the files they name (an editor's unsaved buffer).
+    ``buffers`` replace the content of the files they name (an editor's unsaved buffer);
+    with ``outlines``, a file whose outline is known is read only if its tree is needed.
     """
     modules: list[Module] = []
     diagnostics: list[Diagnostic] = []
@@ -273,7 +336,13 @@ def load_workspace(root: Path, buffers: Buffers = ()) -> Workspace:
     unsaved = dict(buffers)
     package_memo: dict[Path, bool] = {}
     for path in python_files(root, diagnostics):
-        result = read_module(path, root, unsaved.get(os.path.abspath(path)), package_memo)
+        buffer = unsaved.get(os.path.abspath(path))
+        result = outlines.module(path, root, package_memo) if outlines is not None and buffer is None \
+            else None
+        if result is None:
+            result = read_module(path, root, buffer, package_memo)
+            if outlines is not None and buffer is None and isinstance(result, Module):
+                outlines.learn(result)
         if isinstance(result, Diagnostic):
             diagnostics.append(result)
             continue

@@ -126,8 +126,7 @@ def test_analysis_error_diagnostics_surface_once(fake_engine: Path, workspace: P
     import rosgraph_fakes
     from flake8_rosgraph.graph.model import Diagnostic
 
-    def with_error(root, stub_files=(), interface_dirs=(), buffers=(), cpp_memo=None, facts_memo=None,
-                   metadata_memo=None):
+    def with_error(root, stub_files=(), interface_dirs=(), buffers=(), *_cache_parts):
         graph = rosgraph_fakes.build_graph(root, stub_files, interface_dirs, buffers)
         graph.diagnostics.append(Diagnostic("stubs/x.toml", 3, "stub: bad effect", "error"))
         graph.diagnostics.append(Diagnostic("src/a.py", 1, "cannot parse", "warning"))

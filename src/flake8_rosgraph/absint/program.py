@@ -10,15 +10,22 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
+from typing import Callable
 
 from .cfg import CFG, build_cfg
+
+
+#: A module's import statements, as :func:`import_statements` lists them: ``("import", name)``
+#: and ``("from", module or None, level, names)``.
+ImportStatement = tuple
 
 
 @dataclass
 class Module:
     name: str            # dotted module name ("pkg.sub.mod")
     path: str            # root-relative POSIX path
-    tree: ast.Module
+    #: The parsed source, or ``None`` until :attr:`tree` is first read (see :attr:`source`).
+    parsed: ast.Module | None
     #: The non-ASCII source lines by number: the only ones where ast's UTF-8 byte columns
     #: differ from character columns (all lines would cost memory for nothing).
     wide_lines: dict[int, str]
@@ -29,10 +36,26 @@ class Module:
     globals: frozenset[str] = frozenset()
     #: A hash of the source bytes: what a cache of results computed from this module keys on.
     digest: str = ""
+    #: Its import statements, known without the tree (:func:`import_statements`).
+    imports: tuple[ImportStatement, ...] = ()
+    #: Reads and parses the file, for a module made without its tree (its group's facts were
+    #: expected from the cache): the tree and the wide lines.
+    source: Callable[[], tuple[ast.Module, dict[int, str]]] | None = None
+
+    @property
+    def tree(self) -> ast.Module:
+        return self._load()
+
+    def _load(self) -> ast.Module:
+        if self.parsed is None:
+            self.parsed, self.wide_lines = self.source() if self.source is not None \
+                else (ast.Module(body=[], type_ignores=[]), {})
+        return self.parsed
 
     def column(self, node: ast.AST) -> int:
         """1-based character column of ``node`` (ast's ``col_offset`` counts UTF-8 bytes)."""
         line, col = getattr(node, "lineno", 1), getattr(node, "col_offset", 0)
+        self._load()  # the wide lines come with the tree
         text = self.wide_lines.get(line)
         if text is not None:
             col = len(text.encode("utf-8")[:col].decode("utf-8", "replace"))
@@ -145,7 +168,20 @@ class Program:
             if not mod.name.startswith("<"):
                 self._tops.add(mod.name.partition(".")[0])
         for mod in self.modules.values():
-            self.imports[mod.name] = _statement_imports(self, mod)
+            self.imports[mod.name] = self._absolute_imports(mod)
+
+    def _absolute_imports(self, mod: Module) -> frozenset[str]:
+        """Absolute names a module imports (its :attr:`Module.imports` resolved from where it is)."""
+        out: set[str] = set()
+        for statement in mod.imports:
+            if statement[0] == "import":
+                out.add(self.absolute_import(mod, statement[1]))
+            else:
+                _, name, level, names = statement
+                base = self.resolve_import(mod, name, level)
+                out.add(base)
+                out.update(f"{base}.{alias}" for alias in names)
+        return frozenset(out)
 
     def components(self) -> list[tuple[str, ...]]:
         """The workspace's modules in groups that import nothing from one another, each sorted,
@@ -440,23 +476,22 @@ def _child_nodes(node: ast.AST) -> list[ast.AST]:
     return out
 
 
-def _statement_imports(program: Program, mod: Module) -> frozenset[str]:
-    """Absolute names a module imports, anywhere (imports are statements, so only
-    statement lists are walked — cheap enough to do for every file up front)."""
-    out: set[str] = set()
-    stack = list(mod.tree.body)
+def import_statements(tree: ast.Module) -> tuple[ImportStatement, ...]:
+    """The import statements of a module, anywhere in its statements (imports are statements,
+    so only statement lists are walked — cheap enough to do for every file up front), in the
+    order found: ``("import", name)`` and ``("from", module, level, names)``."""
+    out: list[ImportStatement] = []
+    stack = list(tree.body)
     while stack:
         stmt = stack.pop()
         if isinstance(stmt, ast.Import):
-            out.update(program.absolute_import(mod, a.name) for a in stmt.names)
+            out.extend(("import", a.name) for a in stmt.names)
         elif isinstance(stmt, ast.ImportFrom):
-            base = program.resolve_import(mod, stmt.module, stmt.level)
-            out.add(base)
-            out.update(f"{base}.{a.name}" for a in stmt.names)
+            out.append(("from", stmt.module, stmt.level, tuple(a.name for a in stmt.names)))
         else:
             for name in ("body", "orelse", "finalbody", "handlers", "cases"):
                 children = getattr(stmt, name, None)
                 if isinstance(children, list):
                     stack.extend(c for c in children if isinstance(c, (ast.stmt, ast.excepthandler,
                                                                         ast.match_case)))
-    return frozenset(out)
+    return tuple(out)

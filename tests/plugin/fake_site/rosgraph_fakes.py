@@ -26,8 +26,8 @@ _CALL = re.compile(r"create_(publisher|subscription)\(\s*(\w+)\s*,\s*(?:['\"]([^
 _KIND = {"publisher": "publishers", "subscription": "subscriptions"}
 
 
-def build_graph(root, stub_files=(), interface_dirs=(), buffers=(), cpp_memo=None, facts_memo=None,
-                metadata_memo=None):
+def build_graph(root, stub_files=(), interface_dirs=(), buffers=(), *_cache_parts):
+    """The fake analysis; what the cache passes to keep parts between runs is not used."""
     from flake8_rosgraph.graph.model import Entity, Location, RosGraph, RosNode
 
     root = Path(root)
