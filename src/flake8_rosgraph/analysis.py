@@ -57,6 +57,25 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     return library, diagnostics
 
 
+def _library_loader(stub_files: Sequence[Path], diagnostics: list[Diagnostic]) -> Callable[[], LibraryModel]:
+    """The library model, loaded when a group of modules is first analysed (a run whose groups all
+    come from the cache never needs it), its problems added to ``diagnostics`` then — or at once
+    when the user gives stub files, whose problems every run must report (the shipped stubs
+    have none: tested)."""
+    loaded: list[LibraryModel] = []
+
+    def library() -> LibraryModel:
+        if not loaded:
+            model, problems = load_stubs(stub_files)
+            diagnostics.extend(problems)
+            loaded.append(model)
+        return loaded[0]
+
+    if stub_files:
+        library()
+    return library
+
+
 def _launch_systems(root: Path, graph: RosGraph, python: PythonFacts, metadata: WorkspaceMetadata,
                     diagnostics: list[Diagnostic]) -> list:
     """The workspace's launch systems; a failure here must not cost the code-level graph."""
@@ -151,7 +170,8 @@ MetadataMemo = Callable[[Callable[[], WorkspaceMetadata]], WorkspaceMetadata]
 FactsMemo = Callable[[str, Callable[[], PythonFacts]], PythonFacts]
 
 
-def _group_facts(program: Program, library: LibraryModel, metadata: WorkspaceMetadata, memo: FactsMemo | None,
+def _group_facts(program: Program, library: Callable[[], LibraryModel], metadata: WorkspaceMetadata,
+                 memo: FactsMemo | None,
                  kept: list[Analysis] | None) -> PythonFacts:
     """The facts of one group of modules (``program``), analysed on its own or kept from before;
     an internal error costs this group's facts only."""
@@ -163,7 +183,7 @@ def _group_facts(program: Program, library: LibraryModel, metadata: WorkspaceMet
     framework = {c: base for c, base in metadata.registered.items() if c.rpartition(".")[0] in program.modules}
 
     def compute() -> PythonFacts:
-        analysis = Analysis(program, library, framework_classes=framework)
+        analysis = Analysis(program, library(), framework_classes=framework)
         analysis.run()
         facts = facts_of(analysis, executables)
         if kept is not None:
@@ -194,14 +214,14 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
                  kept: list[Analysis] | None = None) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
-        library, stub_diags = load_stubs(stub_files)
-        diagnostics.extend(stub_diags)
-        workspace = load_workspace(root, buffers, outlines)
-        diagnostics.extend(workspace.diagnostics)
-        program = Program(workspace.modules)
+        library = _library_loader(stub_files, diagnostics)
         metadata = metadata_memo(lambda: read_metadata(root)) if metadata_memo is not None \
             else read_metadata(root)
         diagnostics.extend(metadata.diagnostics)
+        workspace = load_workspace(root, buffers, outlines,
+                                   [root / rel for rel in metadata.python_files] if root.is_dir() else None)
+        diagnostics.extend(workspace.diagnostics)
+        program = Program(workspace.modules)
         python = merged([_group_facts(program.part(names), library, metadata, facts_memo, kept)
                          for names in program.components()])
         diagnostics.extend(python.diagnostics)

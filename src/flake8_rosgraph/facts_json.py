@@ -43,7 +43,10 @@ def _classes() -> dict[str, type]:
 
 
 _CLASSES: dict[str, type] | None = None
+#: Class -> its tag and stored fields (the compared ones, in order).
 _FIELDS: dict[type, tuple[str, tuple[str, ...]]] = {}
+#: Classes whose stored fields are their first ``__init__`` parameters, in order: built positionally.
+_POSITIONAL: set[type] = set()
 
 
 def _registry() -> dict[str, type]:
@@ -51,7 +54,11 @@ def _registry() -> dict[str, type]:
     if _CLASSES is None:
         _CLASSES = _classes()
         for tag, cls in _CLASSES.items():
-            _FIELDS[cls] = (tag, tuple(f.name for f in dataclasses.fields(cls) if f.compare))
+            fields = dataclasses.fields(cls)
+            stored = tuple(f.name for f in fields if f.compare)
+            _FIELDS[cls] = (tag, stored)
+            if stored == tuple(f.name for f in fields if f.init)[:len(stored)]:
+                _POSITIONAL.add(cls)
     return _CLASSES
 
 
@@ -85,12 +92,15 @@ def _stable(obj: Any) -> str:
 
 def from_obj(obj: Any) -> Any:
     """The value :func:`to_obj` made ``obj`` from; :class:`NotAFact` for anything else."""
-    if obj is None or isinstance(obj, (bool, int, float, str)):
+    kind = type(obj)
+    if kind is str or kind is int or obj is None or kind is bool or kind is float:
         return obj
-    if isinstance(obj, list):
+    if kind is list:
         return [from_obj(item) for item in obj]
-    if not isinstance(obj, dict) or len(obj) not in (1, 2):
+    if kind is not dict or len(obj) not in (1, 2):
         raise NotAFact("not an encoded fact")
+    if "c" in obj:
+        return _instance(obj)
     if "t" in obj:
         return tuple(from_obj(item) for item in _list(obj["t"]))
     if "f" in obj:
@@ -100,14 +110,20 @@ def from_obj(obj: Any) -> Any:
         if any(len(pair) != 2 for pair in pairs):
             raise NotAFact("not a key-value pair")
         return {from_obj(k): from_obj(v) for k, v in pairs}
-    cls = _registry().get(obj.get("c")) if isinstance(obj.get("c"), str) else None
+    raise NotAFact("not an encoded fact")
+
+
+def _instance(obj: dict) -> Any:
+    cls = _registry().get(obj["c"]) if isinstance(obj["c"], str) else None
     if cls is None:
-        raise NotAFact(f"not a fact class: {obj.get('c')!r}")
+        raise NotAFact(f"not a fact class: {obj['c']!r}")
     names = _FIELDS[cls][1]
     values = _list(obj.get("v"))
     if len(values) != len(names):
         raise NotAFact(f"{obj['c']}: {len(values)} values for {len(names)} fields")
     try:
+        if cls in _POSITIONAL:
+            return cls(*[from_obj(value) for value in values])
         return cls(**{name: from_obj(value) for name, value in zip(names, values)})
     except TypeError as exc:  # a field without a default not stored: not a fact class
         raise NotAFact(str(exc)) from exc

@@ -1,9 +1,10 @@
 """What the workspace's metadata says: its packages, the classes they register, its launch files.
 
 The packages and their executables (:mod:`.launch.packages`), the classes packages register
-with frameworks (:mod:`.registrations`) and the XML/YAML launch files (:mod:`.launch.discover`)
-are read from manifests, build files, plugin and robot descriptions and C++ sources — never
-from the Python modules an edit usually touches. Read together, they are kept together
+with frameworks (:mod:`.registrations`), the XML/YAML launch files (:mod:`.launch.discover`)
+and which files are Python (:mod:`.workspace`) are read from manifests, build files, plugin
+and robot descriptions, shebangs and C++ sources — never from the Python modules an edit
+usually touches. Read together, they are kept together
 between runs (:func:`.cache.metadata_key`), so an edit to Python code does not read them again.
 """
 from __future__ import annotations
@@ -15,6 +16,7 @@ from .graph.model import Diagnostic, internal_error
 from .launch.discover import frontend_launch_files
 from .launch.packages import PackageIndex, find_packages
 from .registrations import registered_classes
+from .workspace import python_files
 
 
 @dataclass
@@ -24,6 +26,9 @@ class WorkspaceMetadata:
     registered: dict[str, str] = field(default_factory=dict)
     #: Root-relative paths of the XML and YAML launch files.
     launch_files: list[str] = field(default_factory=list)
+    #: Root-relative paths of the Python files (see :func:`.workspace.python_files`: which files
+    #: without a suffix are programs is read from shebangs and build files, not from modules).
+    python_files: list[str] = field(default_factory=list)
     #: What could not be read, each naming the file or package.
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
@@ -48,4 +53,5 @@ def read_metadata(root: Path) -> WorkspaceMetadata:
         meta.launch_files = frontend_launch_files(root, meta.diagnostics)
     except Exception as exc:
         meta.diagnostics.append(internal_error("launch files not found", exc))
+    meta.python_files = [path.relative_to(root).as_posix() for path in python_files(root, meta.diagnostics)]
     return meta

@@ -324,18 +324,21 @@ def _parse_again(path: Path, root: Path) -> tuple[ast.Module, dict[int, str]]:
     return found.tree, found.wide_lines
 
 
-def load_workspace(root: Path, buffers: Buffers = (), outlines: Outlines | None = None) -> Workspace:
+def load_workspace(root: Path, buffers: Buffers = (), outlines: Outlines | None = None,
+                   files: list[Path] | None = None) -> Workspace:
     """Read every Python file under ``root``; unique module names (duplicates get a path-based one).
 
     ``buffers`` replace the content of the files they name (an editor's unsaved buffer);
-    with ``outlines``, a file whose outline is known is read only if its tree is needed.
+    with ``outlines``, a file whose outline is known is read only if its tree is needed;
+    ``files``: the Python files when already found (what :func:`python_files` would walk for,
+    the folders it leaves out reported by whoever found them).
     """
     modules: list[Module] = []
     diagnostics: list[Diagnostic] = []
     names: set[str] = set()
     unsaved = dict(buffers)
     package_memo: dict[Path, bool] = {}
-    for path in python_files(root, diagnostics):
+    for path in python_files(root, diagnostics) if files is None else files:
         buffer = unsaved.get(os.path.abspath(path))
         result = outlines.module(path, root, package_memo) if outlines is not None and buffer is None \
             else None
