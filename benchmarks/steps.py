@@ -228,10 +228,18 @@ class LeafEdit:
 
     @classmethod
     def find(cls, root: Path) -> LeafEdit | None:
-        """The first such literal by path, subscriptions first; ``None`` when there is none."""
+        """The first such literal by path: of a subscription whose topic some other node publishes
+        (renaming it makes a finding), else of any subscription, else of a publisher; ``None``
+        when there is none."""
         from flake8_rosgraph.absint.program import Program
+        from flake8_rosgraph.analysis import build_graph
         from flake8_rosgraph.workspace import load_workspace
 
+        graph = build_graph(root)
+        published = {(e.name, n.location) for n in graph.nodes for e in n.entities if e.kind == "publishers"}
+        connected = {(e.location.path, e.location.line) for n in graph.nodes for e in n.entities
+                     if e.kind == "subscriptions" and any(name == e.name and at != n.location
+                                                          for name, at in published)}
         program = Program(load_workspace(root).modules)
         imported = {".".join(name.split(".")[:end]) for names in program.imports.values()
                     for name in names for end in range(1, name.count(".") + 2)}
@@ -243,9 +251,11 @@ class LeafEdit:
                 if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) \
                         and call.func.attr in ("create_subscription", "create_publisher") \
                         and len(call.args) > 1 and isinstance(call.args[1], ast.Constant) \
-                        and isinstance(call.args[1].value, str) and call.args[1].end_lineno == call.lineno:
+                        and isinstance(call.args[1].value, str) and call.args[1].end_lineno == call.args[1].lineno:
                     literal = call.args[1]
-                    found.append((call.func.attr != "create_subscription", module.path, literal.lineno,
+                    rank = 0 if (module.path, call.lineno) in connected else \
+                        1 if call.func.attr == "create_subscription" else 2
+                    found.append((rank, module.path, literal.lineno,
                                   literal.col_offset, literal.end_col_offset, literal.value))
         if not found:
             return None
