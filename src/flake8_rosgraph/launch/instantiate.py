@@ -157,7 +157,9 @@ class Instantiator:
         expanded: set[str] = set()
         entities: list[Entity] = []
         known = True
-        for entity in _named_by_parameters(code.entities, values):
+        foreign = set(launched.target.foreign_end_sites)
+        own = [entity for entity in code.entities if entity.location not in foreign]
+        for entity in _named_by_parameters(own, values):
             if entity.kind not in NAMED_KINDS:
                 entities.append(entity)
                 continue

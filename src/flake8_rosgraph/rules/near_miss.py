@@ -254,12 +254,22 @@ class NearMissFinder:
 
         The partner must be able to run with the endpoint (:meth:`Endpoint.sees`),
         sit on another node (not another instance of the same code node, as two
-        launch files make it), and have a type that does not rule the match out.
+        launch files make it, unless another executable runs it: front ends of one
+        driver class each add their own ends), and have a type that does not rule
+        the match out.
         """
         ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
         for (kind, _), other in ranked:
             for peer in self._peers[other]:
-                if (peer.node.location != endpoint.node.location and endpoint.sees(peer)
+                if (_other_program(peer.node, endpoint.node) and endpoint.sees(peer)
                         and types_compatible(endpoint.entity.type, peer.entity.type)):
                     return NearMiss(other, peer, kind)
         return None
+
+
+def _other_program(a: RosNode, b: RosNode) -> bool:
+    """Whether two nodes are different programs: other code, or one node class run by two executables."""
+    if a.location != b.location:
+        return True
+    return a.launch is not None and b.launch is not None and (
+        (a.launch["package"], a.launch["executable"]) != (b.launch["package"], b.launch["executable"]))

@@ -31,7 +31,8 @@ class PublisherWithoutSubscriber(AbsenceRule):
     *odd one out*: a topic of a node whose other publishers do feed the
     workspace. It stays quiet (unless a near name is subscribed) when
     none of the node's publishers has a subscriber here (a driver's or
-    tool's outputs), when several nodes publish the topic, or when the
+    tool's outputs; a subscriber on a node of the same name, as when
+    several executables run one driver class, is no other node), when several nodes publish the topic, or when the
     workspace only publishes into the topic's namespace (`/camera/...`).
     On 15 public repositories this leaves 3 of 135 dangling ends reported.
     Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
