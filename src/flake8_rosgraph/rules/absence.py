@@ -123,15 +123,21 @@ class AbsenceRule(Rule):
                 and not index.peers(endpoint))
 
     def _whole_sites_only(self, dangling: list[Endpoint], index: EndpointIndex) -> list[Endpoint]:
-        """Keep the dangling endpoints whose creation site dangles in every alternative.
+        """Keep the dangling endpoints whose creation site dangles in every alternative on its node.
 
         ``create_publisher(String, 'a' if sim else 'b', 10)`` yields two
         publishers at one location; if either is connected (or excused), the
         site works in some configuration and the other value is not reported.
+        Each launched instance of a node is a configuration of its own: a
+        parameter file that names the topic wrongly breaks the node it
+        configures, however well the other launch files set it.
         """
-        alternatives = Counter(ep.entity.location for ep in index.endpoints(self.kind))
-        dangling_at = Counter(ep.entity.location for ep in dangling)
-        return [ep for ep in dangling if dangling_at[ep.entity.location] == alternatives[ep.entity.location]]
+        def site(ep: Endpoint) -> tuple:
+            return ep.entity.location, id(ep.node)
+
+        alternatives = Counter(site(ep) for ep in index.endpoints(self.kind))
+        dangling_at = Counter(site(ep) for ep in dangling)
+        return [ep for ep in dangling if dangling_at[site(ep)] == alternatives[site(ep)]]
 
     def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
                 scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
@@ -144,7 +150,8 @@ class AbsenceRule(Rule):
         near = near_misses.find(endpoint)
         if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
-            near = None  # a name launch changed, against a node that launch file does not start
+            # a name launch changed is compared only with the nodes the same launch file starts
+            near = near_misses.find(endpoint, accept=lambda peer: scopes.together(endpoint.node, peer.node))
         if slip_only and (near is None or not near.is_slip_of(endpoint)):
             return
         if near is not None:
