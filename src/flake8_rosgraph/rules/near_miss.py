@@ -237,13 +237,14 @@ class NearMissFinder:
             for other in self._spelling.get(key, ()):
                 if other not in seen:
                     seen.add(other)
-                    distance = self._spelling_distance(tokens, _tokens(other))
+                    distance = self.spelling_distance(tokens, _tokens(other))
                     if distance is not None:
                         add(other, (SPELLING, distance))
         return found
 
     @staticmethod
-    def _spelling_distance(tokens: list[str], others: list[str]) -> int | None:
+    def spelling_distance(tokens: list[str], others: list[str]) -> int | None:
+        """How far apart two names of as many tokens are when exactly one token is misspelt, else ``None``."""
         if len(tokens) != len(others):
             return None
         differing = [(a, b) for a, b in zip(tokens, others) if a != b]
