@@ -119,3 +119,28 @@ def cmake_commands(text: str) -> list[tuple[str, list[str]]]:
         else:
             i += 1
     return commands
+
+
+_VARIABLE_NAME = re.compile(r"[A-Za-z0-9_.+-]+")
+_REFERENCE = re.compile(r"\$\{([A-Za-z0-9_.+-]+)\}")
+
+
+def literal_variables(commands: list[tuple[str, list[str]]]) -> dict[str, str]:
+    """The variables a file sets to one literal word, and only to that one.
+
+    ``set(EXEC_NAME "turtlebot3_fake_node")`` names the executable of a later
+    ``add_executable(${EXEC_NAME} ...)``. A variable set to a list, to another
+    variable, to different words (on branches the scanner does not follow), with
+    ``CACHE``/``PARENT_SCOPE``, or unset, is not literal: it stays unknown.
+    """
+    values: dict[str, set[str]] = {}
+    for name, args in commands:
+        if name in ("set", "unset") and args and _VARIABLE_NAME.fullmatch(args[0]):
+            literal = name == "set" and len(args) == 2 and "$" not in args[1] and ";" not in args[1]
+            values.setdefault(args[0], set()).add(args[1] if literal else "$")
+    return {var: found.pop() for var, found in sorted(values.items()) if len(found) == 1 and "$" not in found}
+
+
+def expand(arg: str, variables: dict[str, str]) -> str:
+    """``arg`` with its ``${VAR}`` references to known variables replaced (others left as written)."""
+    return _REFERENCE.sub(lambda m: variables.get(m.group(1), m.group(0)), arg)

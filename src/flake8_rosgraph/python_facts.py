@@ -58,7 +58,7 @@ def facts_of(analysis: Analysis, executables: Sequence[Executable]) -> PythonFac
         facts.diagnostics.append(internal_error("message facts not gathered", exc))
     facts.launches = read_python_launches(analysis)
     try:
-        reach = EntryReach(analysis)
+        reach = EntryReach(analysis, executables)
         facts.targets = {entry_key(exe): reach.python_target(exe) for exe in executables}
     except Exception as exc:
         facts.diagnostics.append(internal_error("executables not tied to their nodes", exc))

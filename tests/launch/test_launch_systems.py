@@ -112,9 +112,12 @@ def test_findings_of_the_workspace(ws):
     assert sorted(found) == sorted(per_format + [
         ("ROS204", "src/demo_bringup/config/talker.yaml:4",
          "parameter 'rte' is set for node '/r1/speaker', which never declares it; did you mean 'rate'?"),
-        # broken.launch.xml remaps the talker away from the monitor it feeds in the code
+        # broken.launch.xml remaps the talker away from the monitor it feeds in the code: both
+        # ends of that system dangle, however well the other launch files wire the talker
         ("ROS003", "src/demo_py/demo_py/monitor.py:9",
          "topic '/chatter' has no publisher; did you mean '/chattr' (published at src/demo_py/demo_py/talker.py:10)?"),
+        ("ROS001", "src/demo_py/demo_py/talker.py:10",
+         "topic '/chattr' has no subscriber; did you mean '/chatter' (subscribed at src/demo_py/demo_py/monitor.py:9)?"),
     ])
 
 

@@ -140,6 +140,28 @@ def test_cmake_executables_under_other_names_are_known(tmp_path):
     assert package.complete is False  # ${TOOL_NAME}: the list may hold more
 
 
+def test_cmake_executable_named_by_a_literal_variable(tmp_path):
+    """``set(EXEC_NAME "fake_node")`` then ``add_executable(${EXEC_NAME} ...)`` (turtlebot3's
+    packages) names the executable, so the list is complete and a launch file's typo is ROS201;
+    a variable set to a list, to another variable or to two different words stays unknown."""
+    pkg = tmp_path / "fake_base"
+    (pkg / "src").mkdir(parents=True)
+    (pkg / "src" / "fake_node.cpp").write_text("int main() {}\n")
+    (pkg / "package.xml").write_text("<package><name>fake_base</name></package>")
+    (pkg / "CMakeLists.txt").write_text(
+        "project(fake_base)\n"
+        "set(EXEC_NAME \"fake_node\")\n"
+        "add_executable(${EXEC_NAME} src/fake_node.cpp)\n"
+        "install(TARGETS ${EXEC_NAME} DESTINATION lib/${PROJECT_NAME})\n")
+    package = find_packages(tmp_path).packages["fake_base"]
+    assert sorted(package.executables) == ["fake_node"] and package.complete
+    assert package.executables["fake_node"].sources == ("fake_base/src/fake_node.cpp",)
+    for unknown in ("set(EXEC_NAME a b)", "set(EXEC_NAME ${OTHER})", "set(EXEC_NAME a)\nset(EXEC_NAME b)",
+                    "set(EXEC_NAME a CACHE STRING doc)"):
+        (pkg / "CMakeLists.txt").write_text(f"project(fake_base)\n{unknown}\nadd_executable(${{EXEC_NAME}} x.cpp)\n")
+        assert find_packages(tmp_path).packages["fake_base"].complete is False, unknown
+
+
 def test_cmake_installed_scripts_take_their_rename(tmp_path):
     """``install(PROGRAMS x.py DESTINATION lib/${PROJECT_NAME} RENAME x)`` installs the script
     under the new name (tts_ros: 'tts_node.py' as 'tts_node'); without RENAME the file name."""

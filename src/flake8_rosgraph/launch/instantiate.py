@@ -157,7 +157,9 @@ class Instantiator:
         expanded: set[str] = set()
         entities: list[Entity] = []
         known = True
-        for entity in _named_by_parameters(code.entities, values):
+        foreign = set(launched.target.foreign_end_sites)
+        own = [entity for entity in code.entities if entity.location not in foreign]
+        for entity in _named_by_parameters(own, values):
             if entity.kind not in NAMED_KINDS:
                 entities.append(entity)
                 continue
@@ -301,14 +303,20 @@ def _node_key(node: RosNode) -> tuple:
 def apply_systems(graph: RosGraph, systems: list[System], placeholders: bool) -> RosGraph:
     """The code graph with every node the systems start replaced by its launched instances.
 
-    Code nodes no system starts stay as written.  ``placeholders`` adds the
+    Code nodes no system starts stay as written, and so does a started one
+    with ends none of its instances has: ends that only executables no launch
+    file starts create on a node class they share with launched ones (their
+    ``main`` adds them), which run as written.  ``placeholders`` adds the
     launched nodes whose code is not analysed (for printing a system; the
     rules leave them out, since an entity-less node only adds unknowns).
     """
-    started = {id(i.code) for s in systems for i in s.instances}
+    kept: dict[int, set[Location]] = {}
+    for system in systems:
+        for instance in system.instances:
+            kept.setdefault(id(instance.code), set()).update(e.location for e in instance.node.entities)
     nodes: dict[tuple, RosNode] = {}
     for node in graph.nodes:
-        if id(node) not in started:
+        if id(node) not in kept or any(e.location not in kept[id(node)] for e in node.entities):
             nodes.setdefault(_node_key(node), node)
     for system in systems:
         for instance in system.instances:

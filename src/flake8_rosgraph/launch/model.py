@@ -73,6 +73,9 @@ class ExecutableRef:
     node_classes: tuple[tuple[Location, str | None], ...] = ()
     #: ``module:function`` the executable runs, for the JSON output.
     entry: str | None = None
+    #: Where ends are created on its nodes by code only other executables of the same node
+    #: class reach (their ``main``): not its ends (:mod:`.targets`).
+    foreign_end_sites: tuple[Location, ...] = ()
     #: The executables the package does have, for the ROS201 message.
     known: tuple[str, ...] = ()
     #: A C++ executable (``"no-python"``): its source files and component classes as CMake names

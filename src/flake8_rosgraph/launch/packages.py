@@ -26,7 +26,7 @@ from pathlib import Path
 
 from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
-from ..cmake import cmake_commands
+from ..cmake import cmake_commands, expand, literal_variables
 from ..manifest import parse_manifest
 from ..safe_io import describe, is_regular_file, is_within, read_bytes, read_text
 from ..workspace import SKIP_DIRS, left_out
@@ -306,11 +306,13 @@ def _cmake_executables(cmake: Path, folder: Path, root: Path, package: Package,
         return False
     complete = True
     project = next((args[0] for name, args in commands if name == "project" and args), project)
+    variables = literal_variables(commands)
+    if project is not None:
+        variables["PROJECT_NAME"] = project
     libraries: dict[str, tuple[str, ...]] = {}
     links: dict[str, list[str]] = {}
     for name, args in commands:
-        if project is not None:
-            args = [arg.replace("${PROJECT_NAME}", project) for arg in args]
+        args = [expand(arg, variables) for arg in args]
         if name == "add_subdirectory" and args:
             sub = Path(os.path.normpath(folder / args[0]))
             sub_cmake = sub / "CMakeLists.txt"

@@ -10,11 +10,21 @@ dependency record: a task that read the return summary ``("ret", t)`` called
 Where each Python executable leads is read from the analysis of the modules it runs
 (:class:`EntryReach`, kept with that group's facts); :class:`TargetIndex` answers
 launch files from those answers, whichever group each came from.
+
+Several executables may run one node class (a driver class, and front ends that
+each add their own ends in ``main``): the builder makes one code node of it, with
+every front end's ends. An end created by code that only *another* executable of
+that node class reaches (its ``main``) is not one of this executable's ends
+(:attr:`~.model.ExecutableRef.foreign_end_sites`). Ends no entry point reaches
+(those made in callbacks) belong to every executable of the class. Executables of one
+node class run modules of one group (they all import the class), so one analysis
+answers for all of them.
 """
 from __future__ import annotations
 
 from collections import deque
-from typing import Mapping
+from dataclasses import dataclass
+from typing import Mapping, Sequence
 
 from ..absint.engine import Analysis
 from ..absint.values import Obj
@@ -69,12 +79,25 @@ class TargetIndex:
         return self.python.get(entry_key(exe)) or ExecutableRef("no-python", entry=_entry_text(exe))
 
 
-class EntryReach:
-    """The nodes each Python executable of one analysis creates."""
+@dataclass(frozen=True)
+class Reach:
+    """What one Python executable's entry point reaches."""
 
-    def __init__(self, analysis: Analysis) -> None:
+    #: Where the nodes it creates are created.
+    node_sites: frozenset[Location]
+    #: Where the ends (publishers, parameters, timers, ...) its reachable code creates are created.
+    end_sites: frozenset[Location]
+
+
+class EntryReach:
+    """The nodes each Python executable of one analysis creates; ``executables``: all the
+    Python executables that run the analysis's modules."""
+
+    def __init__(self, analysis: Analysis, executables: Sequence[Executable]) -> None:
         self.analysis = analysis
+        self.executables = executables
         self.callees: dict[tuple, set[tuple]] = {}
+        self._reach: dict[Executable, Reach | None] = {}
         for key, readers in analysis.readers.items():
             callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
             if callee is None:
@@ -83,38 +106,68 @@ class EntryReach:
                 self.callees.setdefault(caller, set()).add(callee)
 
     def python_target(self, exe: Executable) -> ExecutableRef:
-        program = self.analysis.program
         entry = _entry_text(exe)
+        starts = self._starts(exe)
+        if starts is None:
+            return ExecutableRef("no-python", entry=entry)
+        sites, open_sites, classes, ends = self.node_sites(starts)
+        if not sites:
+            return ExecutableRef("no-python", entry=entry)
+        return ExecutableRef("found", tuple(sites), tuple(open_sites), tuple(classes), entry=entry,
+                             foreign_end_sites=self._foreign_ends(exe, Reach(frozenset(sites), ends)))
+
+    def _starts(self, exe: Executable) -> list[tuple] | None:
+        """The analysis tasks ``exe`` starts with (its module's top level, its entry function);
+        ``None`` when its code is not among the analysed modules."""
+        program = self.analysis.program
         if exe.module is not None:
             modules = [program.modules[exe.module]] if exe.module in program.modules else []
         else:
             modules = [m for m in program.modules.values() if m.path == exe.script]
         if not modules:
-            return ExecutableRef("no-python", entry=entry)
+            return None
         module = modules[0]
         starts: list[tuple] = [("mod", module.name, ())]
         fids = {f.fid for f in program.functions
                 if f.module is module and f.parent is None and f.cls is None
                 and f.qualname == exe.function}
         starts.extend(t for t in self.analysis.effects if t[0] == "fn" and t[1] in fids)
-        sites, open_sites, classes = self.node_sites(starts)
-        if not sites:
-            return ExecutableRef("no-python", entry=entry)
-        return ExecutableRef("found", tuple(sites), tuple(open_sites), tuple(classes), entry=entry)
+        return starts
 
-    def node_sites(self, starts: list[tuple]
-                   ) -> tuple[list[Location], list[Location], list[tuple[Location, str | None]]]:
-        """The node sites reachable from ``starts``, those open to any parameter, and the
-        ``(site, class)`` of each node object created there."""
+    def _reach_of(self, exe: Executable) -> Reach | None:
+        if exe not in self._reach:
+            starts = self._starts(exe)
+            found = None if starts is None else self.node_sites(starts)
+            self._reach[exe] = None if found is None else Reach(frozenset(found[0]), found[3])
+        return self._reach[exe]
+
+    def _foreign_ends(self, exe: Executable, own: Reach) -> tuple[Location, ...]:
+        """End sites that other Python executables of one of ``exe``'s node sites reach and ``exe`` does not."""
+        foreign: set[Location] = set()
+        for other in self.executables:
+            if other == exe or other.language != "python":
+                continue
+            reach = self._reach_of(other)
+            if reach is not None and reach.node_sites & own.node_sites:
+                foreign |= reach.end_sites
+        return tuple(sorted(foreign - own.end_sites))
+
+    def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location],
+                                                      list[tuple[Location, str | None]], frozenset[Location]]:
+        """The node sites reachable from ``starts``, those open to any parameter, the
+        ``(site, class)`` of each node object created there, and the sites of the ends
+        the reachable code creates."""
         seen = set(starts)
         queue = deque(starts)
         sites: set[Location] = set()
         open_sites: set[Location] = set()
         classes: set[tuple[Location, str | None]] = set()
+        ends: set[Location] = set()
         while queue:
             task = queue.popleft()
             for eff in self.analysis.effects.get(task, {}).values():
                 if eff.kind != "node":
+                    ends.add(Location(eff.path, eff.line, eff.column))
                     continue
                 site = Location(eff.path, eff.line, eff.column)
                 sites.add(site)
@@ -130,4 +183,4 @@ class EntryReach:
                 if callee not in seen:
                     seen.add(callee)
                     queue.append(callee)
-        return sorted(sites), sorted(open_sites), sorted(classes, key=repr)
+        return sorted(sites), sorted(open_sites), sorted(classes, key=repr), frozenset(ends)

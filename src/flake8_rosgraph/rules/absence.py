@@ -25,7 +25,9 @@ line. A dangling end is taken for such an interface, and reported only when a
 near name is used in the other role (a likely typo or namespace slip — the
 strongest signal; every name of the other role counts, connected or not,
 since a typo usually hits a name that other nodes still use: see
-:mod:`.near_miss`), when
+:mod:`.near_miss`; or a slip of an infrastructure topic with that topic's
+type, ``/joint_state`` of ``sensor_msgs/msg/JointState``, whose other end is
+outside the workspace by nature: see :mod:`.infrastructure`), when
 
 * the node has no endpoint of the same kind that reaches another node of the
   workspace — none of its publishers (for ROS001) is subscribed here, so its
@@ -71,6 +73,7 @@ from ..graph.model import PEER_KIND, Entity, RosGraph
 from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
+from .infrastructure import infrastructure_slip
 from .near_miss import NearMissFinder
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
@@ -101,7 +104,8 @@ class AbsenceRule(Rule):
         near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
         # An unknown name elsewhere may be this end's partner; hardly so for a slip of the pen.
         slips = {id(ep) for ep in unconnected if index.unresolved_peer_may_match(ep)
-                 and (near := near_misses.find(ep)) is not None and near.is_slip_of(ep)}
+                 and ((near := near_misses.find(ep)) is not None and near.is_slip_of(ep)
+                      or infrastructure_slip(ep) is not None)}
         dangling = [ep for ep in unconnected
                     if id(ep) in slips or not index.unresolved_peer_may_match(ep)]
         dangling = self._whole_sites_only(dangling, index)
@@ -123,15 +127,21 @@ class AbsenceRule(Rule):
                 and not index.peers(endpoint))
 
     def _whole_sites_only(self, dangling: list[Endpoint], index: EndpointIndex) -> list[Endpoint]:
-        """Keep the dangling endpoints whose creation site dangles in every alternative.
+        """Keep the dangling endpoints whose creation site dangles in every alternative on its node.
 
         ``create_publisher(String, 'a' if sim else 'b', 10)`` yields two
         publishers at one location; if either is connected (or excused), the
         site works in some configuration and the other value is not reported.
+        Each launched instance of a node is a configuration of its own: a
+        parameter file that names the topic wrongly breaks the node it
+        configures, however well the other launch files set it.
         """
-        alternatives = Counter(ep.entity.location for ep in index.endpoints(self.kind))
-        dangling_at = Counter(ep.entity.location for ep in dangling)
-        return [ep for ep in dangling if dangling_at[ep.entity.location] == alternatives[ep.entity.location]]
+        def site(ep: Endpoint) -> tuple:
+            return ep.entity.location, id(ep.node)
+
+        alternatives = Counter(site(ep) for ep in index.endpoints(self.kind))
+        dangling_at = Counter(site(ep) for ep in dangling)
+        return [ep for ep in dangling if dangling_at[site(ep)] == alternatives[site(ep)]]
 
     def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
                 scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
@@ -144,10 +154,16 @@ class AbsenceRule(Rule):
         near = near_misses.find(endpoint)
         if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
-            near = None  # a name launch changed, against a node that launch file does not start
-        if slip_only and (near is None or not near.is_slip_of(endpoint)):
+            # a name launch changed is compared only with the nodes the same launch file starts
+            near = near_misses.find(endpoint, accept=lambda peer: scopes.together(endpoint.node, peer.node))
+        infrastructure = infrastructure_slip(endpoint) if near is None else None
+        if slip_only and (near is None or not near.is_slip_of(endpoint)) and infrastructure is None:
             return
-        if near is not None:
+        if infrastructure is not None:
+            message = (f"{head}; did you mean '{infrastructure}' (an infrastructure topic of this "
+                       f"type, {'published' if self.kind == 'subscriptions' else 'subscribed'} outside the workspace)?")
+            yield Finding(entity.location, self.code, message, origin)
+        elif near is not None:
             peer = near.peer.entity
             message = (f"{head}; did you mean '{near.name}' "
                        f"({VERB[peer.kind]} at {_where(peer)})?")

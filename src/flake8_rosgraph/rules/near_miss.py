@@ -31,7 +31,7 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterable, Sequence
+from typing import Callable, Iterable, Sequence
 
 from ..graph.model import RosNode
 from .topics import Endpoint, types_compatible
@@ -237,29 +237,42 @@ class NearMissFinder:
             for other in self._spelling.get(key, ()):
                 if other not in seen:
                     seen.add(other)
-                    distance = self._spelling_distance(tokens, _tokens(other))
+                    distance = self.spelling_distance(tokens, _tokens(other))
                     if distance is not None:
                         add(other, (SPELLING, distance))
         return found
 
     @staticmethod
-    def _spelling_distance(tokens: list[str], others: list[str]) -> int | None:
+    def spelling_distance(tokens: list[str], others: list[str]) -> int | None:
+        """How far apart two names of as many tokens are when exactly one token is misspelt, else ``None``."""
         if len(tokens) != len(others):
             return None
         differing = [(a, b) for a, b in zip(tokens, others) if a != b]
         return token_typo(*differing[0]) if len(differing) == 1 else None
 
-    def find(self, endpoint: Endpoint) -> NearMiss | None:
+    def find(self, endpoint: Endpoint, accept: Callable[[Endpoint], bool] | None = None) -> NearMiss | None:
         """The best near miss for ``endpoint`` (surest kind, then closest, then alphabetical), if any.
 
-        The partner must be able to run with the endpoint (:meth:`Endpoint.sees`),
-        sit on another node (not another instance of the same code node, as two
-        launch files make it), and have a type that does not rule the match out.
+        ``accept``: which partners may be taken (those of one launch system, say),
+        when a name has users in several systems. The partner must also be able
+        to run with the endpoint (:meth:`Endpoint.sees`), sit on another node
+        (not another instance of the same code node, as two launch files make
+        it, unless another executable runs it: front ends of one driver class
+        each add their own ends), and have a type that does not rule the match out.
         """
         ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
         for (kind, _), other in ranked:
             for peer in self._peers[other]:
-                if (peer.node.location != endpoint.node.location and endpoint.sees(peer)
-                        and types_compatible(endpoint.entity.type, peer.entity.type)):
+                if (_other_program(peer.node, endpoint.node) and endpoint.sees(peer)
+                        and types_compatible(endpoint.entity.type, peer.entity.type)
+                        and (accept is None or accept(peer))):
                     return NearMiss(other, peer, kind)
         return None
+
+
+def _other_program(a: RosNode, b: RosNode) -> bool:
+    """Whether two nodes are different programs: other code, or one node class run by two executables."""
+    if a.location != b.location:
+        return True
+    return a.launch is not None and b.launch is not None and (
+        (a.launch["package"], a.launch["executable"]) != (b.launch["package"], b.launch["executable"]))

@@ -31,18 +31,22 @@ class PublisherWithoutSubscriber(AbsenceRule):
     *odd one out*: a topic of a node whose other publishers do feed the
     workspace. It stays quiet (unless a near name is subscribed) when
     none of the node's publishers has a subscriber here (a driver's or
-    tool's outputs), when several nodes publish the topic, or when the
+    tool's outputs; a subscriber on a node of the same name, as when
+    several executables run one driver class, is no other node), when several nodes publish the topic, or when the
     workspace only publishes into the topic's namespace (`/camera/...`).
     On 15 public repositories this leaves 3 of 135 dangling ends reported.
     Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
     `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
-    `/joint_states`, rviz tool topics) are exempt. It also stays quiet when
+    `/joint_states`, rviz tool topics) are exempt; a publisher of one's type
+    under a slip of its name (`/tf_statics` of `tf2_msgs/msg/TFMessage`) is
+    reported with it as near name (a namespace more or less is no slip). It also stays quiet when
     some subscription's topic name could not be resolved and its type and
     known end (a relative name on a node of unknown namespace ends in
     `/<name>`) do not rule the match out — but not for a slip of the pen
     (spelling, case, plural, resolution) of a fully known subscribed name
     of the same type — and when another alternative of the same
-    creation site (`'a' if sim else 'b'`) is connected. A topic name known
+    creation site (`'a' if sim else 'b'`) on the same node is connected
+    (each launched instance is a configuration of its own). A topic name known
     only partly (`param if launched else '/scan'`) is never reported, since
     its unknown alternative may be subscribed; its known alternative counts
     as a publisher of that topic for ROS003.

@@ -35,10 +35,14 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
     `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
     `/joint_states`, rviz tool topics such as `/initialpose` and
-    `/goal_pose`) are exempt. It also stays quiet when some publisher's topic
+    `/goal_pose`) are exempt; a subscription of one's type under a slip of
+    its name (`/joint_state` of `sensor_msgs/msg/JointState`) is reported
+    with it as near name, its publisher being outside by nature (a namespace
+    more or less, `/robot1/joint_states`, is no slip). It also stays quiet when some publisher's topic
     name could not be resolved and its type and known end do not rule the
     match out (a slip of the pen of a fully known published name of the same
-    type is reported all the same), and when another alternative of the same creation site is connected. A
+    type is reported all the same), and when another alternative of the same creation site on the same
+    node is connected (each launched instance is a configuration of its own). A
     topic name known only partly (`param if launched else '/scan'`) is never
     reported; its known alternative counts as a subscription for ROS001.
     Which names count as near, how test fixtures are kept apart from

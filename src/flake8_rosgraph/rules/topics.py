@@ -158,6 +158,10 @@ class EndpointIndex:
     def wired_nodes(self, kind: str, exempt: ExemptNames) -> frozenset[int]:
         """``id()`` of every node with an endpoint of ``kind`` that reaches *another* node through a non-exempt name.
 
+        Another node has another fully qualified name (:func:`_node_key`): launched
+        copies of one driver class that several executables share (one adds a raw-data
+        publisher in its ``main``, another the matching subscription) are one node
+        talking to itself, which says nothing about whether its outputs feed the workspace.
         Infrastructure names (``/tf``, ``/clock``, ...) do not count: sharing
         them says nothing about whether a node's publishers (say) feed the
         workspace's own data flow or only the world outside. Nor do partly known
@@ -167,16 +171,16 @@ class EndpointIndex:
         for (k, name), endpoints in self.by_name.items():
             if k != kind or name in exempt:
                 continue
-            peer_nodes_by_scope: dict[str | None, set[int]] = {}
+            peer_nodes_by_scope: dict[str | None, set[str | int]] = {}
             for ep in endpoints:
                 if ep.entity.partial:
                     continue
                 # Ends of one scope see the same peers: compute them once per scope.
                 if ep.scope not in peer_nodes_by_scope:
-                    peer_nodes_by_scope[ep.scope] = {id(p.node) for p in self.peers(ep)
+                    peer_nodes_by_scope[ep.scope] = {_node_key(p.node) for p in self.peers(ep)
                                                      if not p.entity.partial}
                 peer_nodes = peer_nodes_by_scope[ep.scope]
-                if len(peer_nodes) > 1 or (peer_nodes and id(ep.node) not in peer_nodes):
+                if len(peer_nodes) > 1 or (peer_nodes and _node_key(ep.node) not in peer_nodes):
                     wired.add(id(ep.node))
         return frozenset(wired)
 

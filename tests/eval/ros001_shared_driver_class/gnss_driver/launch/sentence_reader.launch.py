@@ -1,0 +1,9 @@
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='gnss_driver', executable='sentence_reader', output='screen',
+             parameters=[{'frame_id': 'gps'}]),
+    ])
