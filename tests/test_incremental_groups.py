@@ -158,8 +158,9 @@ def test_an_edit_reanalyses_its_group_only_and_the_finding_follows(root: Path, a
     topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
     found = _report(root)
     assert analysed == [("nav", "nav.monitor", "nav.topics")]
-    assert [(path, line, code) for path, line, code, _ in found] == [("nav/nav/monitor.py", 12, "ROS003")]
-    assert "did you mean '/scan'" in found[0][3]
+    assert [(path, line, code) for path, line, code, _ in found] == [
+        ("nav/nav/monitor.py", 12, "ROS003"), ("sensors/sensors/base.py", 7, "ROS001")]
+    assert "did you mean '/scan'" in found[0][3] and "did you mean '/scna'" in found[1][3]
 
     analysed.clear()
     topics.write_text(topics.read_text().replace("'/scna'", "'/scan'"))
@@ -223,7 +224,8 @@ def test_unsaved_buffers_read_kept_groups_and_store_none(root: Path, analysed) -
     buffer = monitor.read_text().replace("SCAN_TOPIC, self.on_scan", "'/scna', self.on_scan").encode()
     cache.start_run()
     report = cache.workspace_report(root, Settings(), ((str(monitor), buffer),))
-    assert [(f.location.path, f.code) for f in report.findings] == [("nav/nav/monitor.py", "ROS003")]
+    assert [(f.location.path, f.code) for f in report.findings] == [
+        ("nav/nav/monitor.py", "ROS003"), ("sensors/sensors/base.py", "ROS001")]
     assert analysed == [("nav", "nav.monitor", "nav.topics")]
     assert sorted(p.name for p in folder.iterdir()) == before
 
@@ -297,7 +299,7 @@ def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypa
                         lambda path, *args, **kwargs: read.append(path) or original(path, *args, **kwargs))
     topics = root / "nav/nav/topics.py"
     topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
-    assert [code for _, _, code, _ in _report(root)] == ["ROS003"]
+    assert [code for _, _, code, _ in _report(root)] == ["ROS003", "ROS001"]
     # the edited module, and the one of its group the analysis reads (the empty __init__ it never needs)
     assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
 
