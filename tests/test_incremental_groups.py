@@ -246,7 +246,9 @@ def test_what_the_format_cannot_hold_is_refused() -> None:
     with pytest.raises(facts_json.NotAFact):
         facts_json.to_obj(object())
     with pytest.raises(facts_json.NotAFact):
-        facts_json.to_obj(float("nan"))
+        facts_json.from_obj({"n": "1e999"})
+    assert facts_json.from_obj(json.loads(json.dumps(facts_json.to_obj((float("inf"), -float("inf")))))) \
+        == (float("inf"), -float("inf"))  # a period of "never", a QoS duration of infinity
     with pytest.raises(facts_json.NotAFact):
         facts_json.from_obj({"c": "os.system", "v": ["true"]})
     with pytest.raises(facts_json.NotAFact):
@@ -308,3 +310,29 @@ def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypa
     topics.write_text(topics.read_text().replace("'/scna'", "'/scan'") + "# back\n")
     assert _report(root) == []  # a foreign outline index: every file is read again, nothing lost
     assert len(read) == len(list(root.rglob("*.py")))
+
+
+def test_every_group_of_a_fleet_workspace_can_be_kept(tmp_path: Path, monkeypatch) -> None:
+    """A group whose facts the format cannot hold is analysed again on every run, silently slow:
+    the synthetic fleet (timers that never fire, QoS durations of infinity) and examples/ must
+    be keepable whole."""
+    import sys
+    import flake8_rosgraph.analysis as analysis_module
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "benchmarks"))
+    import synth
+    synth.write_workspace(tmp_path / "fleet", 1)
+    refused = []
+    original = analysis_module.facts_of
+
+    def checked(analysis, executables):
+        facts = original(analysis, executables)
+        try:
+            facts_json.to_obj(facts)
+        except facts_json.NotAFact as exc:
+            refused.append((min(analysis.program.modules), str(exc)))
+        return facts
+
+    monkeypatch.setattr(analysis_module, "facts_of", checked)
+    for root in (tmp_path / "fleet", Path(__file__).resolve().parent.parent / "examples"):
+        analysis_module.build_graph(root)
+    assert refused == []

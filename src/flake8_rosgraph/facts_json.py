@@ -5,7 +5,8 @@ such dataclasses. JSON has lists, strings, numbers, booleans and null; everythin
 an object with one tag saying what it is:
 
 * ``{"t": [...]}`` a tuple, ``{"f": [...]}`` a frozenset (in a stable order),
-  ``{"m": [[key, value], ...]}`` a dict (any keys, insertion order kept);
+  ``{"m": [[key, value], ...]}`` a dict (any keys, insertion order kept), ``{"n": "inf"}`` a
+  float JSON cannot write (``inf``, ``-inf``, ``nan``);
 * ``{"c": "graph.model.Entity", "v": [...]}`` a dataclass of one of :data:`FACT_MODULES`:
   its compared fields in order. Fields left out of comparisons are the producer's working
   handles (an analysis's function number), not facts: they are not stored and come back as
@@ -25,6 +26,10 @@ from typing import Any
 #: The modules whose dataclasses are facts (relative to the package).
 FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
                 "launch.packages", "python_facts", "metadata")
+
+
+#: The floats JSON cannot write, as ``repr`` gives them.
+_NON_FINITE = frozenset({"inf", "-inf", "nan"})
 
 
 class NotAFact(ValueError):
@@ -67,9 +72,7 @@ def to_obj(value: Any) -> Any:
     if value is None or isinstance(value, (bool, int, str)):
         return value
     if isinstance(value, float):
-        if not math.isfinite(value):
-            raise NotAFact(f"non-finite number {value!r}")
-        return value
+        return value if math.isfinite(value) else {"n": repr(value)}  # JSON has no inf or nan
     if isinstance(value, list):
         return [to_obj(item) for item in value]
     if isinstance(value, tuple):
@@ -101,6 +104,10 @@ def from_obj(obj: Any) -> Any:
         raise NotAFact("not an encoded fact")
     if "c" in obj:
         return _instance(obj)
+    if "n" in obj:
+        if obj["n"] not in _NON_FINITE:
+            raise NotAFact("not a non-finite number")
+        return float(obj["n"])
     if "t" in obj:
         return tuple(from_obj(item) for item in _list(obj["t"]))
     if "f" in obj:
