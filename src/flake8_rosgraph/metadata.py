@@ -16,7 +16,7 @@ from .graph.model import Diagnostic, internal_error
 from .launch.discover import frontend_launch_files
 from .launch.packages import PackageIndex, find_packages
 from .registrations import registered_classes
-from .workspace import python_files
+from . import workspace
 
 
 @dataclass
@@ -53,5 +53,6 @@ def read_metadata(root: Path) -> WorkspaceMetadata:
         meta.launch_files = frontend_launch_files(root, meta.diagnostics)
     except Exception as exc:
         meta.diagnostics.append(internal_error("launch files not found", exc))
-    meta.python_files = [path.relative_to(root).as_posix() for path in python_files(root, meta.diagnostics)]
+    meta.python_files = [path.relative_to(root).as_posix()
+                         for path in workspace.python_files(root, meta.diagnostics)]
     return meta

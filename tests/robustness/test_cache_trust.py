@@ -159,8 +159,8 @@ def test_empty_folder_is_adopted_and_pruning_keeps_foreign_files(ws: Path, tmp_p
         (ws / CHAT / "chat_pkg" / "version.py").write_text(f"VERSION = {i}\n")
         cache.start_run()
         cache.load_or_build(ws, settings)
-    # The input-digest index is written once files have settled (timing): not an entry.
-    entries = [p for p in folder.glob("*.json") if p.name not in ("notes.json", cache.INPUT_INDEX)]
+    # The input-digest index (written once files have settled) and the outlines are not entries.
+    entries = [p for p in folder.glob("*.json") if p.name not in ("notes.json", cache.INPUT_INDEX, cache.OUTLINES)]
     assert len(entries) == cache.KEEP_ENTRIES
     assert (folder / "notes.json").is_file()
 
