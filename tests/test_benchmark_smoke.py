@@ -96,7 +96,7 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     steps = data["workspace"]["steps"]
     assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed", "renamed",
                            "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph"]
-    assert steps["renamed"]["result"].endswith("renamed 'chatter' in src/chat/chat/listener.py:9")
+    assert steps["renamed"]["result"].endswith("misspelt 'chatter' in src/chat/chat/listener.py:9")
     assert steps["graph"]["result"] == "2 nodes, 0 diagnostics"
     # The subscription to 'unheard' has no publisher: the plugin ran and reported in every plugin row,
     # and the baseline did not.
@@ -106,7 +106,7 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     assert ros_reported["flake8"] == ros_reported["flake8-auto"] == 0
     assert ros_reported["cold"] > 0
     assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"] == ros_reported["cold-auto"]
-    # The renamed subscription has no publisher, and 'chatter' no subscriber: the change shows,
+    # The misspelt subscription has no publisher, and 'chatter' no subscriber: the change shows,
     # in the whole run and in the edited file alone.
     assert ros_reported["renamed"] == ros_reported["warm"] + 2
     assert ros_reported["precommit-without"] == 0 and ros_reported["precommit"] >= 1
