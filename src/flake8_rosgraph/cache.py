@@ -199,26 +199,15 @@ class InputDigests:
 
     @classmethod
     def load(cls, cache_dir: Path, secret: bytes) -> InputDigests:
-        try:
-            obj = json.loads(read_bytes(cache_dir / INPUT_INDEX, cache_dir, MAX_ENTRY_BYTES).decode("utf-8"))
-            signature = obj.get("signature") if isinstance(obj, dict) else None
-            if isinstance(signature, str) and hmac.compare_digest(signature, _signature(secret, obj)) \
-                    and obj.get("format") == INPUT_INDEX_FORMAT and isinstance(obj.get("files"), dict):
-                return cls(obj["files"])
-        except (OSError, ValueError, TypeError, RecursionError):
-            pass  # missing, corrupt or foreign: every input is hashed
-        return cls()
+        obj = read_signed(cache_dir / INPUT_INDEX, secret)
+        if obj is not None and obj.get("format") == INPUT_INDEX_FORMAT and isinstance(obj.get("files"), dict):
+            return cls(obj["files"])
+        return cls()  # missing, corrupt or foreign: every input is hashed
 
     def store(self, cache_dir: Path, secret: bytes) -> None:
         """Write what this run learnt, when it differs from what was read (atomically)."""
-        if self.seen == self.known or not _own_dir(cache_dir):
-            return
-        obj: dict[str, Any] = {"format": INPUT_INDEX_FORMAT, "files": self.seen}
-        obj["signature"] = _signature(secret, obj)
-        text = json.dumps(obj, sort_keys=True, ensure_ascii=True)
-        if len(text) <= MAX_ENTRY_BYTES:
-            with contextlib.suppress(OSError):
-                _replace_with(cache_dir / INPUT_INDEX, text)
+        if self.seen != self.known and _own_dir(cache_dir):
+            write_signed(cache_dir / INPUT_INDEX, {"format": INPUT_INDEX_FORMAT, "files": self.seen}, secret)
 
 
 def _cpp_key(digests: InputDigests) -> str:
@@ -289,27 +278,23 @@ def _json_memo(cache_dir: Path, secret: bytes, key: str, name: str,
     entry = cache_dir / f"{key}.json"
 
     def memo(read: Callable[[], Any]) -> Any:
-        try:
-            obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
-            signature = obj.pop("signature", None) if isinstance(obj, dict) else None
-            if isinstance(signature, str) and obj.get("key") == key \
-                    and hmac.compare_digest(signature, _signature(secret, obj)):
+        obj = read_signed(entry, secret)
+        if obj is not None and obj.get("key") == key:
+            try:
                 kept = decode(obj[name])
+            except (ValueError, KeyError, TypeError, RecursionError):
+                pass  # corrupt: read the sources
+            else:
                 with contextlib.suppress(OSError):
                     os.utime(entry)  # recently used: the pruning keeps it
                 return kept
-        except (OSError, ValueError, KeyError, TypeError, RecursionError):
-            pass  # missing, corrupt or foreign: read the sources
         found = read()
         try:
             obj = {"key": key, name: encode(found)}
         except ValueError:
-            return found
-        obj["signature"] = _signature(secret, obj)
-        text = json.dumps(obj, sort_keys=True, ensure_ascii=True)
-        if len(text) <= MAX_ENTRY_BYTES and _own_dir(cache_dir):
-            with contextlib.suppress(OSError):
-                _replace_with(entry, text)
+            return found  # a value the format cannot hold: read again next time
+        if _own_dir(cache_dir):
+            write_signed(entry, obj, secret)
         return found
 
     return memo
@@ -449,6 +434,30 @@ def _signature(secret: bytes, obj: dict[str, Any]) -> str:
     return hmac.new(secret, canonical.encode("ascii"), hashlib.sha256).hexdigest()
 
 
+def read_signed(path: Path, secret: bytes) -> dict[str, Any] | None:
+    """The JSON object stored at ``path`` when this user's secret signed it; ``None`` when it is
+    missing, unreadable, corrupt, too big or written by anyone else (untrusted)."""
+    try:
+        obj = json.loads(read_bytes(path, path.parent, MAX_ENTRY_BYTES).decode("utf-8"))
+    except (OSError, ValueError, RecursionError):
+        return None
+    signature = obj.get("signature") if isinstance(obj, dict) else None
+    if not isinstance(signature, str) or not hmac.compare_digest(signature, _signature(secret, obj)):
+        return None
+    return obj
+
+
+def write_signed(path: Path, obj: dict[str, Any], secret: bytes) -> None:
+    """Sign ``obj`` and write it to ``path`` atomically (the caller has checked that the cache
+    owns the folder); an object larger than :data:`MAX_ENTRY_BYTES` is not written (the cache
+    stays bounded on disk), and a failed write only costs the keeping."""
+    obj = {**obj, "signature": _signature(secret, obj)}
+    text = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    if len(text) <= MAX_ENTRY_BYTES:
+        with contextlib.suppress(OSError):
+            _replace_with(path, text)
+
+
 # -- the cache folder: only ever one this tool owns -----------------------------------------------
 
 def _own_dir(cache_dir: Path) -> bool:
@@ -519,23 +528,17 @@ def _create_new(path: Path, content: bytes) -> None:
 
 
 def _read_entry(entry: Path, root: Path, key: str, secret: bytes) -> WorkspaceReport | None:
+    obj = read_signed(entry, secret)
+    if obj is None:
+        return None  # missing, corrupt or not written by this user on this machine: rebuilt
     try:
-        obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
-        signature = obj.get("signature") if isinstance(obj, dict) else None
-        if not isinstance(signature, str) or not hmac.compare_digest(signature, _signature(secret, obj)):
-            return None  # not written by this user on this machine: untrusted
         return report_from_obj(obj, root, key)
-    except (OSError, ValueError, KeyError, TypeError, RecursionError):
-        return None  # unreadable, corrupt or hostile: rebuilt
+    except (ValueError, KeyError, TypeError, RecursionError):
+        return None  # hostile: rebuilt
 
 
 def _write_entry(entry: Path, report: WorkspaceReport, key: str, secret: bytes) -> None:
-    obj = report_to_obj(report, key)
-    obj["signature"] = _signature(secret, obj)
-    text = json.dumps(obj, indent=1, sort_keys=True, ensure_ascii=True)
-    if len(text) > MAX_ENTRY_BYTES:
-        return  # kept in memory only: the cache stays bounded on disk
-    _replace_with(entry, text)
+    write_signed(entry, report_to_obj(report, key), secret)  # too big: kept in memory only
 
 
 def _replace_with(target: Path, text: str) -> None:
@@ -658,10 +661,9 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     """
     root = Path(os.path.abspath(root))
     secret = machine_secret()
-    cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
+    cache_dir = _cache_dir(root, settings)
     if secret is None or cache_dir is None:
         return build_report(root, settings)
-    cache_dir = Path(os.path.abspath(cache_dir))
     digests = InputDigests.load(cache_dir, secret)
     key = cache_key(root, settings, digests)
     digests.store(cache_dir, secret)
@@ -695,7 +697,8 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
                 _write_entry(entry, report, key, secret)
                 _prune(entry.parent)
             if outlines is not None and outlines.used != outlines.known:
-                _write_outlines(cache_dir, secret, outlines.used)
+                # this run's files only: the index stays the workspace's size
+                write_signed(cache_dir / OUTLINES, {"context": tool_fingerprint(), "files": outlines.used}, secret)
             if folder is not None:
                 facts_cache.prune(folder)
         return report
@@ -703,25 +706,16 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
 
 def _read_outlines(cache_dir: Path, secret: bytes) -> dict[str, Any]:
     """The Python files' outlines earlier runs stored (:class:`.workspace.Outlines`), if trusted."""
-    try:
-        obj = json.loads(read_bytes(cache_dir / OUTLINES, cache_dir, MAX_ENTRY_BYTES).decode("utf-8"))
-        signature = obj.get("signature") if isinstance(obj, dict) else None
-        if isinstance(signature, str) and hmac.compare_digest(signature, _signature(secret, obj)) \
-                and obj.get("context") == tool_fingerprint() and isinstance(obj.get("files"), dict):
-            return obj["files"]
-    except (OSError, ValueError, TypeError, RecursionError):
-        pass  # missing, corrupt or foreign: every file is parsed
-    return {}
+    obj = read_signed(cache_dir / OUTLINES, secret)
+    if obj is not None and obj.get("context") == tool_fingerprint() and isinstance(obj.get("files"), dict):
+        return obj["files"]
+    return {}  # missing, corrupt or foreign: every file is parsed
 
 
-def _write_outlines(cache_dir: Path, secret: bytes, outlines: dict[str, Any]) -> None:
-    """Store this run's outlines (its files only: the index stays the workspace's size)."""
-    obj: dict[str, Any] = {"context": tool_fingerprint(), "files": outlines}
-    obj["signature"] = _signature(secret, obj)
-    text = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
-    if len(text) <= MAX_ENTRY_BYTES and _own_dir(cache_dir):
-        with contextlib.suppress(OSError):
-            _replace_with(cache_dir / OUTLINES, text)
+def _cache_dir(root: Path, settings: Settings) -> Path | None:
+    """Where the cache of ``root`` lives (absolute); ``None`` for a lone file without ``--cache-dir``."""
+    cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
+    return None if cache_dir is None else Path(os.path.abspath(cache_dir))
 
 
 def _unsaved_report(root: Path, settings: Settings, buffers: Buffers) -> WorkspaceReport:
@@ -729,9 +723,8 @@ def _unsaved_report(root: Path, settings: Settings, buffers: Buffers) -> Workspa
     the buffers do not touch are read from the cache when it has them."""
     from . import facts_cache
     secret = machine_secret()
-    cache_dir = settings.cache_dir or (root / CACHE_DIR_NAME if root.is_dir() else None)
-    folder = Path(os.path.abspath(cache_dir)) / facts_cache.GROUPS_DIR \
-        if secret is not None and cache_dir is not None else None
+    cache_dir = _cache_dir(root, settings)
+    folder = cache_dir / facts_cache.GROUPS_DIR if secret is not None and cache_dir is not None else None
     if folder is None or not folder.is_dir() or folder.is_symlink():
         return build_report(root, settings, buffers)
     context = facts_cache.context_key(tuple(settings.stub_files))

@@ -331,11 +331,12 @@ class _Explainer:
             self._fixtures = Fixtures(self.program)
         out = []
         for name, fid in sorted(self._fixtures.arguments(func).items()):
-            fixture = self.program.functions[fid]
-            produced = [task for task in self.an.effects if task[0] == "fn" and task[1] == fid
-                        and not self.an.heap.get(("ret", task), BOTTOM).is_bottom]
-            if fixture.is_generator and self.an.heap.get(("yield", fid), BOTTOM).is_bottom \
-                    or not fixture.is_generator and not produced:
+            if self.program.functions[fid].is_generator:
+                produced = not self.an.heap.get(("yield", fid), BOTTOM).is_bottom
+            else:
+                produced = any(task[0] == "fn" and task[1] == fid and not self.an.returns(task).is_bottom
+                               for task in self.an.effects)
+            if not produced:
                 out.append(name)
         return out
 

@@ -16,8 +16,6 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
-import hmac
-import json
 import os
 import stat
 import time
@@ -25,7 +23,7 @@ from pathlib import Path
 from typing import Callable
 
 from . import facts_json
-from .cache import _OWN_FILE, MAX_ENTRY_BYTES, _replace_with, _signature, tool_fingerprint
+from .cache import _OWN_FILE, MAX_ENTRY_BYTES, read_signed, tool_fingerprint, write_signed
 from .python_facts import PythonFacts
 from .safe_io import read_bytes
 
@@ -78,30 +76,23 @@ def facts_memo(folder: Path, secret: bytes, context: str, store: bool = True
         facts = compute()
         if store:
             try:
-                obj = {"key": key, "facts": facts_json.to_obj(facts)}
+                write_signed(entry, {"key": key, "facts": facts_json.to_obj(facts)}, secret)
             except facts_json.NotAFact:
-                return facts  # a fact the format cannot hold: analysed again next time
-            obj["signature"] = _signature(secret, obj)
-            text = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
-            if len(text) <= MAX_ENTRY_BYTES:
-                with contextlib.suppress(OSError):
-                    _replace_with(entry, text)
+                pass  # a fact the format cannot hold: analysed again next time
         return facts
 
     return memo
 
 
 def _read(entry: Path, key: str, secret: bytes) -> PythonFacts | None:
+    obj = read_signed(entry, secret)
+    if obj is None or obj.get("key") != key:
+        return None  # missing, corrupt, foreign, or not for this key: computed again
     try:
-        obj = json.loads(read_bytes(entry, entry.parent, MAX_ENTRY_BYTES).decode("utf-8"))
-        signature = obj.get("signature") if isinstance(obj, dict) else None
-        if not isinstance(signature, str) or obj.get("key") != key \
-                or not hmac.compare_digest(signature, _signature(secret, obj)):
-            return None  # not written by this user on this machine for this key: untrusted
         facts = facts_json.from_obj(obj["facts"])
-        return facts if isinstance(facts, PythonFacts) else None
-    except (OSError, ValueError, KeyError, TypeError, RecursionError):
-        return None  # missing, corrupt or hostile: computed again
+    except (ValueError, KeyError, TypeError, RecursionError):
+        return None  # hostile: computed again
+    return facts if isinstance(facts, PythonFacts) else None
 
 
 def prune(folder: Path) -> None:

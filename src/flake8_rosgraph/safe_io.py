@@ -73,7 +73,7 @@ def _resolved(text: str) -> str:
     (a workspace's files share a few hundred folders; resolving each path anew costs a system
     call per folder above it). Paths with ``..`` take the full resolution, whose order differs."""
     folder, name = os.path.split(text)
-    if not name or name == ".." or os.pardir in folder.split(os.sep):
+    if name in ("", os.curdir, os.pardir) or os.pardir in folder.split(os.sep):
         return os.path.realpath(text)
     try:
         if stat.S_ISLNK(os.lstat(text).st_mode):

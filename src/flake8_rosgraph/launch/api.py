@@ -32,12 +32,12 @@ def systems_for(root: Path, graph: RosGraph, python: PythonLaunches | None,
 
     ``python``: what the analysis read of each Python launch file, ``targets``: where each
     Python executable leads (both ``None`` when the Python code was not analysed);
-    ``packages``, ``frontend``: the workspace's packages and XML/YAML launch files, when already
-    found.  Each system is executed and
-    instantiated on its own: a failure in one is a problem of that system, never the loss of
-    the others.  Files, folders and packages that cannot be read are added to
-    ``diagnostics``.  Without ``walk`` (a single file analysed) only the analysed Python
-    launch files count: no folder around them is searched for packages or launch files.
+    ``packages``, ``frontend``: the workspace's packages and XML/YAML launch files, when
+    already found.  Each system is executed and instantiated on its own: a failure in one is a
+    problem of that system, never the loss of the others.  Files, folders and packages that
+    cannot be read are added to ``diagnostics``.  Without ``walk`` (a single file analysed)
+    only the analysed Python launch files count: no folder around them is searched for
+    packages or launch files.
     """
     root = Path(root)
     diagnostics = [] if diagnostics is None else diagnostics

@@ -23,7 +23,6 @@ answers for all of them.
 from __future__ import annotations
 
 from collections import deque
-from dataclasses import dataclass
 from typing import Mapping, Sequence
 
 from ..absint.engine import Analysis
@@ -79,16 +78,6 @@ class TargetIndex:
         return self.python.get(entry_key(exe)) or ExecutableRef("no-python", entry=_entry_text(exe))
 
 
-@dataclass(frozen=True)
-class Reach:
-    """What one Python executable's entry point reaches."""
-
-    #: Where the nodes it creates are created.
-    node_sites: frozenset[Location]
-    #: Where the ends (publishers, parameters, timers, ...) its reachable code creates are created.
-    end_sites: frozenset[Location]
-
-
 class EntryReach:
     """The nodes each Python executable of one analysis creates; ``executables``: all the
     Python executables that run the analysis's modules."""
@@ -97,7 +86,7 @@ class EntryReach:
         self.analysis = analysis
         self.executables = executables
         self.callees: dict[tuple, set[tuple]] = {}
-        self._reach: dict[Executable, Reach | None] = {}
+        self._walks: dict[Executable, tuple | None] = {}
         for key, readers in analysis.readers.items():
             callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
             if callee is None:
@@ -107,14 +96,12 @@ class EntryReach:
 
     def python_target(self, exe: Executable) -> ExecutableRef:
         entry = _entry_text(exe)
-        starts = self._starts(exe)
-        if starts is None:
+        walked = self._walked(exe)
+        if walked is None or not walked[0]:
             return ExecutableRef("no-python", entry=entry)
-        sites, open_sites, classes, ends = self.node_sites(starts)
-        if not sites:
-            return ExecutableRef("no-python", entry=entry)
+        sites, open_sites, classes, ends = walked
         return ExecutableRef("found", tuple(sites), tuple(open_sites), tuple(classes), entry=entry,
-                             foreign_end_sites=self._foreign_ends(exe, Reach(frozenset(sites), ends)))
+                             foreign_end_sites=self._foreign_ends(exe, frozenset(sites), ends))
 
     def _starts(self, exe: Executable) -> list[tuple] | None:
         """The analysis tasks ``exe`` starts with (its module's top level, its entry function);
@@ -134,23 +121,23 @@ class EntryReach:
         starts.extend(t for t in self.analysis.effects if t[0] == "fn" and t[1] in fids)
         return starts
 
-    def _reach_of(self, exe: Executable) -> Reach | None:
-        if exe not in self._reach:
+    def _walked(self, exe: Executable) -> tuple | None:
+        """:meth:`node_sites` from ``exe``'s start (``None``: its code is not analysed here), once."""
+        if exe not in self._walks:
             starts = self._starts(exe)
-            found = None if starts is None else self.node_sites(starts)
-            self._reach[exe] = None if found is None else Reach(frozenset(found[0]), found[3])
-        return self._reach[exe]
+            self._walks[exe] = None if starts is None else self.node_sites(starts)
+        return self._walks[exe]
 
-    def _foreign_ends(self, exe: Executable, own: Reach) -> tuple[Location, ...]:
-        """End sites that other Python executables of one of ``exe``'s node sites reach and ``exe`` does not."""
+    def _foreign_ends(self, exe: Executable, sites: frozenset[Location],
+                      ends: frozenset[Location]) -> tuple[Location, ...]:
+        """End sites that other Python executables of one of ``exe``'s node ``sites`` reach and
+        ``exe`` does not (its own are ``ends``)."""
         foreign: set[Location] = set()
         for other in self.executables:
-            if other == exe or other.language != "python":
-                continue
-            reach = self._reach_of(other)
-            if reach is not None and reach.node_sites & own.node_sites:
-                foreign |= reach.end_sites
-        return tuple(sorted(foreign - own.end_sites))
+            walked = self._walked(other) if other != exe else None
+            if walked is not None and sites.intersection(walked[0]):
+                foreign |= walked[3]
+        return tuple(sorted(foreign - ends))
 
     def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location],
                                                       list[tuple[Location, str | None]], frozenset[Location]]:
