@@ -336,3 +336,178 @@ def test_every_group_of_a_fleet_workspace_can_be_kept(tmp_path: Path, monkeypatc
     for root in (tmp_path / "fleet", Path(__file__).resolve().parent.parent / "examples"):
         analysis_module.build_graph(root)
     assert refused == []
+
+
+# -- declarative modules: copied into each importing group, never welding groups together -------
+
+FLEET_INTERFACES = {
+    "fleet_interfaces/package.xml": NAV["nav/package.xml"].replace("nav", "fleet_interfaces"),
+    # a message package's re-exports, as rosidl generates them (and some repositories commit)
+    "fleet_interfaces/msg/__init__.py": """
+        from fleet_interfaces.msg._robot_state import RobotState  # noqa: F401
+        from fleet_interfaces.msg._task import Task  # noqa: F401
+    """,
+}
+FLEET = package("nav", {
+    # topic names in one place, read by the nodes below
+    "names": """
+        \"\"\"Topics of the fleet.\"\"\"
+        STATE_TOPIC = '/fleet/state'
+        TASK_TOPICS = ('/fleet/task', '/fleet/task_retry')
+        __all__ = ['STATE_TOPIC', 'TASK_TOPICS']
+    """,
+    "reporter": """
+        import rclpy
+        from rclpy.node import Node
+        from fleet_interfaces.msg import RobotState
+
+        from nav.names import STATE_TOPIC
+
+
+        class Reporter(Node):
+            def __init__(self):
+                super().__init__('state_reporter')
+                self.state = self.create_publisher(RobotState, STATE_TOPIC, 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Reporter())
+    """,
+    "dispatcher": """
+        import rclpy
+        from rclpy.node import Node
+        from fleet_interfaces.msg import RobotState, Task
+
+        from nav import names
+
+
+        class Dispatcher(Node):
+            def __init__(self):
+                super().__init__('dispatcher')
+                self.create_subscription(RobotState, names.STATE_TOPIC, self.on_state, 10)
+                self.tasks = [self.create_publisher(Task, topic, 10) for topic in names.TASK_TOPICS]
+
+            def on_state(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Dispatcher())
+    """,
+    "task_logger": """
+        import rclpy
+        from rclpy.node import Node
+        from fleet_interfaces.msg import Task
+
+        from nav.names import TASK_TOPICS
+
+
+        class TaskLogger(Node):
+            def __init__(self):
+                super().__init__('task_logger')
+                for topic in TASK_TOPICS:
+                    self.create_subscription(Task, topic, self.on_task, 10)
+
+            def on_task(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(TaskLogger())
+    """,
+}, {"state_reporter": "reporter", "dispatcher": "dispatcher", "task_logger": "task_logger"})
+
+
+@pytest.fixture
+def fleet(tmp_path: Path) -> Path:
+    return write(tmp_path / "ws", {**FLEET_INTERFACES, **FLEET})
+
+
+def _groups(root: Path) -> list[tuple[str, ...]]:
+    return [g for g in Program(load_workspace(root).modules).components() if g != ("setup",)]
+
+
+def test_declarative_modules_are_copied_into_each_group_that_imports_them(fleet: Path) -> None:
+    shared = ("msg", "nav", "nav.names")  # re-exports, an empty __init__, constants
+    assert _groups(fleet) == [tuple(sorted((*shared, own))) for own in
+                              ("nav.dispatcher", "nav.reporter", "nav.task_logger")]
+
+
+def test_an_edit_to_one_node_reanalyses_that_node_only(fleet: Path, analysed) -> None:
+    assert _report(fleet) == []
+    analysed.clear()
+    logger = fleet / "nav/nav/task_logger.py"
+    logger.write_text(logger.read_text().replace(
+        "        for topic in TASK_TOPICS:",
+        "        self.retries = self.create_subscription(Task, '/fleet/task_rerty', self.on_task, 10)\n"
+        "        for topic in TASK_TOPICS:"))
+    found = _report(fleet)
+    assert analysed == [("msg", "nav", "nav.names", "nav.task_logger")]
+    assert [(path, code) for path, _, code, _ in found] == [("nav/nav/task_logger.py", "ROS003")]
+    assert "did you mean '/fleet/task_retry'" in found[0][3]
+
+
+def test_an_edit_to_a_declarative_module_reanalyses_every_group_that_copies_it(fleet: Path, analysed) -> None:
+    _report(fleet)
+    analysed.clear()
+    names = fleet / "nav/nav/names.py"
+    names.write_text(names.read_text().replace("'/fleet/task_retry'", "'/fleet/task_retyr'"))
+    assert [code for _, _, code, _ in _report(fleet)] == []  # both ends moved together
+    assert analysed == [g for g in _groups(fleet) if "nav.names" in g and len(g) > 3]
+
+
+def test_a_module_whose_names_others_assign_is_not_copied(fleet: Path, monkeypatch) -> None:
+    """``names.STATE_TOPIC = …`` in one module changes what every importer reads: one group,
+    analysed as the whole program would be."""
+    reporter = fleet / "nav/nav/reporter.py"
+    reporter.write_text(reporter.read_text().replace(
+        "from nav.names import STATE_TOPIC\n",
+        "from nav import names\nfrom nav.names import STATE_TOPIC\n\nnames.STATE_TOPIC = '/fleet/state2'\n"))
+    groups = _groups(fleet)
+    assert ("msg", "nav", "nav.dispatcher", "nav.names", "nav.reporter", "nav.task_logger") in groups
+    grouped = cache.build_report(fleet, Settings())
+    monkeypatch.setattr(Program, "components", lambda self: [tuple(sorted(self.modules))])
+    whole = cache.build_report(fleet, Settings())
+    assert grouped == whole
+
+
+@pytest.mark.parametrize("source, declares", [
+    ('"""Doc."""\nfrom a import b as c\nimport x.y\nN = 3\nT: tuple = ("a", ("b", 1.0))\n', ("N", "T", "c", "x")),
+    ("", ()),
+    ("from a import *\n", None),             # binds names nobody here can list
+    ("N = make()\n", None),                   # runs code
+    ("def f():\n    pass\n", None),          # defines code importers call
+    ("if DEBUG:\n    N = 1\n", None),
+    ("a.b = 1\n", None),
+])
+def test_declared_names(source: str, declares) -> None:
+    import ast
+    from flake8_rosgraph.absint.outline import declared_names
+    assert declared_names(ast.parse(source)) == declares
+
+
+def test_attribute_stores_cover_every_assignment_form() -> None:
+    import ast
+    from flake8_rosgraph.absint.outline import attribute_stores
+    source = """
+a.one = 1
+a.two, [b.three, *c.four] = 2, [3, 4]
+a.five += 1
+a.six: int = 6
+del a.seven
+for a.eight in range(3):
+    pass
+with open(p) as a.nine:
+    pass
+def f(node):
+    node.ten = 10
+x = a.read
+setattr(a, 'eleven', 11)
+"""
+    tree = ast.parse(source)
+    stored = {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"}
+    assert attribute_stores(tree, mentions_setattr=False) == stored
+    assert attribute_stores(tree, mentions_setattr=True) == stored | {"eleven"}

@@ -20,7 +20,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
 
-from .absint.program import Module, import_statements
+from .absint.outline import attribute_stores, declared_names, import_statements
+from .absint.program import Module
 from .graph.model import Diagnostic
 from .options import Buffers
 from .cmake import cmake_commands
@@ -261,13 +262,15 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None,
     first = text.split("\n", 1)[0]
     program = first.startswith("#!") and "python" in first
     return Module(name, rel, tree, wide, is_package, program, digest=hashlib.sha256(data).hexdigest(),
-                  imports=import_statements(tree))
+                  imports=import_statements(tree), declares=declared_names(tree),
+                  attribute_stores=attribute_stores(tree, b"setattr" in data))
 
 
 @dataclass
 class Outlines:
-    """What earlier runs learnt of each Python file that parsed, by content digest: its import
-    statements and whether it is a program (``["ok", program, statements]``, as JSON).
+    """What earlier runs learnt of each Python file that parsed, by content digest: whether it
+    is a program, its import statements, the names it declares and the attribute names it
+    assigns (``["ok", program, statements, declares, stores]``, as JSON; see :mod:`.absint.outline`).
 
     With the digests the cache key computed (:class:`.cache.InputDigests`, by file identity), a
     file whose outline is known is made into a module without being read or parsed: only the
@@ -286,20 +289,31 @@ class Outlines:
         digest = self.digests.get(rel)
         outline = self.known.get(digest) if digest is not None else None
         statements = _statements(outline)
-        if statements is None:
+        if statements is None or not _names(outline[3], allow_none=True) or not _names(outline[4]):
             return None
         self.used[digest] = outline
         name, is_package = module_name(path, root if root.is_dir() else root.parent, package_memo)
         return Module(name, rel, None, {}, is_package, outline[1], digest=digest, imports=statements,
+                      declares=None if outline[3] is None else tuple(outline[3]),
+                      attribute_stores=frozenset(outline[4]),
                       source=functools.partial(_parse_again, path, root))
 
     def learn(self, module: Module) -> None:
-        self.used[module.digest] = ["ok", module.program, [list(s) for s in module.imports]]
+        self.used[module.digest] = ["ok", module.program, [list(s) for s in module.imports],
+                                    None if module.declares is None else list(module.declares),
+                                    sorted(module.attribute_stores)]
+
+
+def _names(item: Any, allow_none: bool = False) -> bool:
+    """Whether an outline's entry is a list of names (or ``None`` where that is allowed)."""
+    if item is None:
+        return allow_none
+    return isinstance(item, list) and all(isinstance(name, str) for name in item)
 
 
 def _statements(outline: Any) -> tuple | None:
     """The import statements of a well-formed outline, else ``None``."""
-    if not (isinstance(outline, list) and len(outline) == 3 and outline[0] == "ok"
+    if not (isinstance(outline, list) and len(outline) == 5 and outline[0] == "ok"
             and isinstance(outline[1], bool) and isinstance(outline[2], list)):
         return None
     out = []

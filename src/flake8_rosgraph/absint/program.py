@@ -13,11 +13,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from .cfg import CFG, build_cfg
-
-
-#: A module's import statements, as :func:`import_statements` lists them: ``("import", name)``
-#: and ``("from", module or None, level, names)``.
-ImportStatement = tuple
+from .outline import ImportStatement
 
 
 @dataclass
@@ -36,8 +32,12 @@ class Module:
     globals: frozenset[str] = frozenset()
     #: A hash of the source bytes: what a cache of results computed from this module keys on.
     digest: str = ""
-    #: Its import statements, known without the tree (:func:`import_statements`).
+    #: Its import statements, known without the tree (:func:`.outline.import_statements`).
     imports: tuple[ImportStatement, ...] = ()
+    #: The names its top level binds when it only declares (:func:`.outline.declared_names`).
+    declares: tuple[str, ...] | None = None
+    #: The attribute names it assigns (:func:`.outline.attribute_stores`).
+    attribute_stores: frozenset[str] = frozenset()
     #: Reads and parses the file, for a module made without its tree (its group's facts were
     #: expected from the cache): the tree and the wide lines.
     source: Callable[[], tuple[ast.Module, dict[int, str]]] | None = None
@@ -184,16 +184,22 @@ class Program:
         return frozenset(out)
 
     def components(self) -> list[tuple[str, ...]]:
-        """The workspace's modules in groups that import nothing from one another, each sorted,
-        in order of their first module.
+        """The workspace's modules in groups analysed apart, each sorted, in sorted order.
 
         Two modules are in one group when one imports the other, or a package the other's import
         runs (``import a.b.c`` runs ``a`` and ``a.b``), or a test file the ``conftest.py`` whose
         fixtures pytest hands it (:mod:`.fixtures`), directly or through others. The analysis
         of a group reads nothing of another: no global, class, function or object crosses
         between them, so each can be analysed — and its results kept — on its own.
+
+        A declarative module (:meth:`shared_modules`) joins nobody: every group that imports
+        it holds a copy, so a package's ``__init__.py``, a module of topic-name constants or a
+        message package's re-exports do not weld all their importers into one group that any
+        edit re-analyses whole. Its own analysis is the same in every copy, and without code the
+        only facts it can give are diagnostics, which the graph keeps once.
         """
         from .fixtures import conftests_seen_from, is_test_file
+        shared = self.shared_modules()
         leader = {name: name for name in self.modules}
 
         def find(name: str) -> str:
@@ -202,22 +208,59 @@ class Program:
                 name = leader[name]
             return name
 
-        for name, imported in self.imports.items():
-            for dotted in imported:
-                parts = dotted.split(".")
-                for end in range(1, len(parts) + 1):
-                    other = ".".join(parts[:end])
-                    if other in leader:
-                        leader[find(other)] = find(name)
+        for name in self.modules:
+            for other in self._imported_modules(name):
+                if (other in shared) == (name in shared):
+                    leader[find(other)] = find(name)
         by_path = {module.path: name for name, module in self.modules.items()}
         for name, module in self.modules.items():
             if is_test_file(module.path):
                 for conftest in conftests_seen_from(module.path, by_path.get):
                     leader[find(conftest)] = find(name)
-        groups: dict[str, list[str]] = {}
+        groups: dict[str, set[str]] = {}
         for name in self.modules:
-            groups.setdefault(find(name), []).append(name)
-        return sorted(tuple(sorted(group)) for group in groups.values())
+            groups.setdefault(find(name), set()).add(name)
+        for members in groups.values():
+            todo = [other for name in members for other in self._imported_modules(name) if other in shared]
+            while todo:
+                other = todo.pop()
+                if other not in members:
+                    members.add(other)
+                    todo.extend(self._imported_modules(other))
+        copied = set().union(*(members for members in groups.values() if not members <= shared))
+        # A group of declarative modules only, each copied into a group that imports it, adds nothing.
+        return sorted(tuple(sorted(group)) for group in groups.values()
+                      if not group <= shared or not group <= copied)
+
+    def _imported_modules(self, name: str) -> set[str]:
+        """The workspace modules ``name``'s imports run: those named, and the packages above them."""
+        out = set()
+        for dotted in self.imports[name]:
+            parts = dotted.split(".")
+            for end in range(1, len(parts) + 1):
+                other = ".".join(parts[:end])
+                if other in self.modules:
+                    out.add(other)
+        out.discard(name)
+        return out
+
+    def shared_modules(self) -> set[str]:
+        """Modules each importing group analyses its own copy of (:meth:`components`).
+
+        A module qualifies when it only declares (:func:`.outline.declared_names`), is not run
+        as a program, imports only modules that qualify, and no module assigns one of its names
+        as an attribute (``config.DEBUG = True`` changes what every importer reads, so they
+        stay one group).
+        """
+        stored = set().union(*(m.attribute_stores for m in self.modules.values()))
+        shared = {name for name, m in self.modules.items()
+                  if m.declares is not None and not m.program and stored.isdisjoint(m.declares)}
+        changed = True
+        while changed:
+            lost = {name for name in shared if not self._imported_modules(name) <= shared}
+            shared -= lost
+            changed = bool(lost)
+        return shared
 
     def part(self, names: tuple[str, ...]) -> Program:
         """A program of the modules ``names`` only (a group of :meth:`components`), resolving
@@ -474,24 +517,3 @@ def _child_nodes(node: ast.AST) -> list[ast.AST]:
         elif isinstance(value, ast.AST) and not isinstance(value, _NOTHING_INSIDE):
             out.append(value)
     return out
-
-
-def import_statements(tree: ast.Module) -> tuple[ImportStatement, ...]:
-    """The import statements of a module, anywhere in its statements (imports are statements,
-    so only statement lists are walked — cheap enough to do for every file up front), in the
-    order found: ``("import", name)`` and ``("from", module, level, names)``."""
-    out: list[ImportStatement] = []
-    stack = list(tree.body)
-    while stack:
-        stmt = stack.pop()
-        if isinstance(stmt, ast.Import):
-            out.extend(("import", a.name) for a in stmt.names)
-        elif isinstance(stmt, ast.ImportFrom):
-            out.append(("from", stmt.module, stmt.level, tuple(a.name for a in stmt.names)))
-        else:
-            for name in ("body", "orelse", "finalbody", "handlers", "cases"):
-                children = getattr(stmt, name, None)
-                if isinstance(children, list):
-                    stack.extend(c for c in children if isinstance(c, (ast.stmt, ast.excepthandler,
-                                                                        ast.match_case)))
-    return tuple(out)
