@@ -132,22 +132,27 @@ def _encoded(text: str) -> bytes:
     return text.encode("utf-8", "surrogateescape")
 
 
-def workspace_inputs(root: Path) -> list[Path]:
-    """The workspace files the key covers, sorted by POSIX path relative to ``root``.
+def workspace_inputs(root: Path) -> list[tuple[str, str]]:
+    """The workspace files the key covers, as ``(POSIX path relative to root's folder, path)``,
+    sorted by the former.
 
     Every folder any reader enters is walked (only version-control data, build
     products and hidden folders are skipped by all of them), so each file the
-    analysis may read is covered; a lone-file root covers that file.
+    analysis may read is covered; a lone-file root covers that file. Paths stay strings:
+    every run walks this, and making a ``Path`` of each file cost more than the walk.
     """
     if not root.is_dir():
-        return [root] if root.exists() else []
-    found: list[Path] = []
-    for directory, dirnames, filenames in os.walk(root):
+        return [(root.name, str(root))] if root.exists() else []
+    top = str(root)
+    found: list[tuple[str, str]] = []
+    for directory, dirnames, filenames in os.walk(top):
         dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS]
+        folder = os.path.relpath(directory, top).replace(os.sep, "/")
+        prefix = "" if folder == "." else folder + "/"
         # A name without a dot may be a Python program (a shebang, an installed script).
-        found += [Path(directory, name) for name in filenames
-                  if Path(name).suffix in _INPUT_SUFFIXES or name in _INPUT_NAMES or "." not in name]
-    return sorted(found, key=lambda p: _encoded(p.relative_to(root).as_posix()))
+        found += [(prefix + name, os.path.join(directory, name)) for name in filenames
+                  if os.path.splitext(name)[1] in _INPUT_SUFFIXES or name in _INPUT_NAMES or "." not in name]
+    return sorted(found, key=lambda item: _encoded(item[0]))
 
 
 @lru_cache(maxsize=1)
@@ -179,18 +184,18 @@ class InputDigests:
         #: The digest of every file this run keyed on, by root-relative path.
         self.current: dict[str, str] = {}
 
-    def digest(self, path: Path, root: Path, rel: str) -> str:
+    def digest(self, path: str, root: Path, rel: str) -> str:
         try:
             info = os.lstat(path)
         except OSError:
-            return _input_digest(path, root)
+            return _input_digest(Path(path), root)
         identity = [info.st_size, info.st_mtime_ns, info.st_ctime_ns, info.st_ino]
         remembered = self.known.get(rel)
         if isinstance(remembered, list) and len(remembered) == 5 and remembered[:4] == identity \
                 and isinstance(remembered[4], str):
             digest = remembered[4]
         else:
-            digest = _input_digest(path, root)
+            digest = _input_digest(Path(path), root)
         self.current[rel] = digest
         settled = time.time_ns() - max(info.st_mtime_ns, info.st_ctime_ns) > RACY_SECONDS * 1_000_000_000
         if settled and not digest.startswith(("refused:", "unreadable:")):
@@ -309,12 +314,11 @@ def cache_key(root: Path, settings: Settings, digests: InputDigests | None = Non
     for name in settings.external_topics:
         digest.update(_encoded(f"\0external\0{name}"))
     for folder in settings.interface_dirs:
-        for path in workspace_inputs(folder) if folder.is_dir() else ():
+        for _, name in workspace_inputs(folder) if folder.is_dir() else ():
+            path = Path(name)
             digest.update(_encoded(f"\0interface\0{path.resolve().as_posix()}\0{_input_digest(path, None)}"))
-    base = root if root.is_dir() else root.parent
     digests = digests or InputDigests()
-    for path in workspace_inputs(root):
-        rel = path.relative_to(base).as_posix()
+    for rel, path in workspace_inputs(root):
         digest.update(_encoded(f"\0file\0{rel}\0{digests.digest(path, root, rel)}"))
     return digest.hexdigest()
 
@@ -667,12 +671,10 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     digests = InputDigests.load(cache_dir, secret)
     key = cache_key(root, settings, digests)
     digests.store(cache_dir, secret)
-    cpp_ends = _cpp_memo(cache_dir, secret, _cpp_key(digests))
-    metadata = _metadata_memo(cache_dir, secret, metadata_key(digests))
     entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
     if cached is not None:
-        return cached
+        return cached  # the common case: nothing else to key, import or read
     with contextlib.ExitStack() as stack:
         locked = False
         if _own_dir(entry.parent):
@@ -685,6 +687,8 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
             if cached is not None:
                 return cached
         from . import facts_cache
+        cpp_ends = _cpp_memo(cache_dir, secret, _cpp_key(digests))
+        metadata = _metadata_memo(cache_dir, secret, metadata_key(digests))
         folder = facts_cache.groups_dir(cache_dir) if _own_dir(cache_dir) else None
         groups = None if folder is None else \
             facts_cache.facts_memo(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
