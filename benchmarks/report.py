@@ -138,6 +138,7 @@ def workspace_targets(summaries: dict[str, Summary]) -> list[Target]:
         # --jobs=auto: the workers run side by side, so only the wall ratio means anything.
         Target("--jobs=auto cold ÷ --jobs=auto without (wall)", _ratio(summaries, "cold-auto", "flake8-auto"),
                1.20, "×", None),
+        ratio_target("graph command ÷ ros2inspector graph (peer)", "graph", "peer-graph", 1.00),
     ]
 
 

@@ -47,7 +47,7 @@ def plugin_state(bench: WorkspaceBench) -> tuple[str, bool]:
     return with_plugin, PLUGIN_DIST in with_plugin
 
 
-def workspace_steps(bench: WorkspaceBench, with_plugin: bool) -> list[Step]:
+def workspace_steps(bench: WorkspaceBench, with_plugin: bool, peer: str | None) -> list[Step]:
     steps = [bench.startup(), bench.ast_parse(), bench.pyflakes(), bench.flake8_without()]
     if with_plugin:
         steps += [bench.flake8_cold(), bench.flake8_warm(), bench.flake8_one_changed()]
@@ -58,7 +58,7 @@ def workspace_steps(bench: WorkspaceBench, with_plugin: bool) -> list[Step]:
     steps.append(bench.flake8_without_auto())
     if with_plugin:
         steps.append(bench.flake8_cold_auto())
-    return steps + [bench.graph()]
+    return steps + [bench.graph()] + ([bench.peer_graph(peer)] if peer else [])
 
 
 def summary_obj(summary: Summary, result: str) -> dict[str, object]:
@@ -76,6 +76,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--scales", default=",".join(map(str, growth.DEFAULT_SCALES)),
                         help="growth series scale factors (default %(default)s)")
     parser.add_argument("--json", type=Path, metavar="OUT", help="also write all measurements as JSON")
+    parser.add_argument("--peer", default=os.environ.get("ROS2INSPECTOR") or shutil.which("ros2inspector"),
+                        help="the ros2inspector executable that `graph` is compared with (default: "
+                             "$ROS2INSPECTOR, else ros2inspector on PATH; without it that row is missing)")
     parser.add_argument("--readme", action="store_true",
                         help="also put the printed tables into benchmarks/README.md (its latest-results block)")
     args = parser.parse_args(argv)
@@ -96,7 +99,7 @@ def main(argv: list[str] | None = None) -> int:
         corpus = Corpus.scan(Path(copy))
         bench = WorkspaceBench(corpus)
         version, with_plugin = plugin_state(bench)
-        steps = workspace_steps(bench, with_plugin)
+        steps = workspace_steps(bench, with_plugin, args.peer)
         summaries = run_steps(steps, args.runs)
         results = {step.key: step.describe(summaries[step.key].samples[-1].stdout) for step in steps}
         points = growth.measure_growth(work, scales, args.runs, with_plugin) if args.growth else []
@@ -106,6 +109,9 @@ def main(argv: list[str] | None = None) -> int:
     out = [machine.line()]
     if not with_plugin:
         out.append(f"note: {PLUGIN_DIST} is not loadable by flake8; its rows are missing")
+    if not args.peer:
+        out.append("note: ros2inspector is not installed (pip install ros2inspector==0.1.5, or --peer PATH); "
+                   "the graph ÷ peer row is missing")
     out += ["", report.workspace_table(corpus, str(args.dir), args.runs, summaries, results), ""]
     if points:
         out += [report.growth_table(points, args.runs), "", report.exponents_line(points), ""]

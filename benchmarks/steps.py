@@ -6,7 +6,8 @@ pyflakes, flake8 ``-j1`` without the plugin, flake8 ``-j1`` with it (cold: its
 cache removed; warm: cache present, nothing changed; one file changed: one
 file's content edited, so the cache key misses; a topic misspelt in a leaf module,
 so a finding changes; flake8 on that one edited file, as pre-commit runs it), and
-the standalone ``graph`` command. All subprocess steps run in the interpreter running the benchmark.
+the standalone ``graph`` command, and the peer tool ros2inspector's graph of the same tree
+when it is installed. All our subprocess steps run in the interpreter running the benchmark.
 
 Each repetition runs every step once, in this order, so that slow drift in
 machine load (other work on the same host) hits all steps alike instead of
@@ -87,6 +88,11 @@ def _count_reported(stdout: str) -> str:
 def _describe_graph(stdout: str) -> str:
     graph = json.loads(stdout)
     return f"{len(graph['nodes'])} nodes, {len(graph['diagnostics'])} diagnostics"
+
+
+def _describe_peer_graph(stdout: str) -> str:
+    graph = json.loads(stdout)
+    return f"{len(graph['nodes'])} nodes and topics, {len(graph['edges'])} edges"
 
 
 class WorkspaceBench:
@@ -214,6 +220,14 @@ class WorkspaceBench:
                     lambda _: run_command([self.python, "-m", "flake8_rosgraph", "graph", ".",
                                            "--format", "json"], self.root, self.env),
                     _describe_graph)
+
+    def peer_graph(self, peer: str) -> Step:
+        """The peer tool's communication graph of the same tree, its cache off (as ``graph``
+        keeps none): what ``graph`` is compared with."""
+        return Step("peer-graph", "ros2inspector graph comms (peer tool, --no-cache)",
+                    lambda _: run_command([peer, "--quiet", "graph", "comms", "--path", ".", "--format", "json",
+                                           "--no-cache"], self.root, self.env),
+                    _describe_peer_graph)
 
 
 #: Leaf-module topic literals tried, in order, for one whose rename changes a finding.

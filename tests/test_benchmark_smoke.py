@@ -69,8 +69,15 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     workspace = tmp_path / "ws"
     files = _tiny_workspace(workspace)
     out = tmp_path / "bench.json"
+    # A stand-in for ros2inspector: what the row needs of it is its command line and its JSON.
+    peer = tmp_path / "fake-ros2inspector"
+    peer.write_text(f"#!{sys.executable}\nimport sys\n"
+                    "assert sys.argv[1:] == ['--quiet', 'graph', 'comms', '--path', '.', '--format', 'json', "
+                    "'--no-cache'], sys.argv\n"
+                    "print('{\"nodes\": [1, 2, 3], \"edges\": [1]}')\n")
+    peer.chmod(0o755)
     done = subprocess.run([sys.executable, str(BENCH_DIR / "run.py"), str(workspace), "--runs", "1",
-                           "--json", str(out)],
+                           "--json", str(out), "--peer", str(peer)],
                           capture_output=True, text=True, timeout=300, check=False)
     assert done.returncode == 0, done.stderr
     table = done.stdout
@@ -82,7 +89,7 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
                   "flake8 -j1 + plugin, topic renamed in a leaf module",
                   "pre-commit: flake8 without plugin on the edited file",
                   "pre-commit: flake8 + plugin on the edited file", "flake8 --jobs=auto without plugin",
-                  "flake8 --jobs=auto + plugin, cold", "graph command"):
+                  "flake8 --jobs=auto + plugin, cold", "graph command", "ros2inspector graph comms"):
         assert f"| {label}" in table, label
     lines = sum(len(data.splitlines()) for data in files.values())
     assert f"— 3 files, {lines} lines;" in table
@@ -90,19 +97,21 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     assert "| --jobs=auto cold ÷ --jobs=auto without (wall) |" in table
     assert "| topic renamed in a leaf module ÷ flake8 without |" in table
     assert "| pre-commit on the edited file (wall s) |" in table
+    assert "| graph command ÷ ros2inspector graph (peer) |" in table
     assert re.search(r"^\d{4}-\d\d-\d\d \d\d:\d\d UTC; machine: ", table, re.MULTILINE)
 
     data = json.loads(out.read_text())
     steps = data["workspace"]["steps"]
     assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed", "renamed",
-                           "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph"]
+                           "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph", "peer-graph"]
     assert steps["renamed"]["result"].endswith("misspelt 'chatter' in src/chat/chat/listener.py:9")
     assert steps["graph"]["result"] == "2 nodes, 0 diagnostics"
+    assert steps["peer-graph"]["result"] == "3 nodes and topics, 1 edges"
     # The subscription to 'unheard' has no publisher: the plugin ran and reported in every plugin row,
     # and the baseline did not.
     ros_reported = {key: int(re.search(r"(\d+) ROS", step["result"]).group(1))
                     for key, step in steps.items()
-                    if key not in ("startup", "ast", "pyflakes", "graph")}
+                    if key not in ("startup", "ast", "pyflakes", "graph", "peer-graph")}
     assert ros_reported["flake8"] == ros_reported["flake8-auto"] == 0
     assert ros_reported["cold"] > 0
     assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"] == ros_reported["cold-auto"]
