@@ -157,6 +157,7 @@ class CallSemantics:
             return BOTTOM
         task = self.an.function_task(fid, ctx)
         self.record_call(node, ("task", task))
+        self.an.run_now(task)
         return self.an.read(("ret", task), self.frame.task)
 
     def record_call(self, node, callee: tuple, args: tuple = (), effects: tuple = ()) -> None:

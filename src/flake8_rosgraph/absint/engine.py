@@ -55,6 +55,8 @@ WIDEN_AFTER = 3
 HEAP_WIDEN_AFTER = 3
 #: Objects of one class whose uncalled public methods are analysed (see ``_uncalled_methods``).
 MAX_OBJECTS_PER_CLASS = 2
+#: Calls nested inside one another that are analysed on the spot (see :meth:`Analysis.run_now`).
+MAX_NESTED_RUNS = 6
 
 Task = tuple  # ("mod", module name, ()) | ("fn", fid, ctx)
 
@@ -139,6 +141,8 @@ class Analysis:
         #: The account that first queued each task; a task's re-run falls back to it.
         self._owner: dict[Task, Account] = {}
         self._current: Account | None = None
+        #: The tasks running, innermost last (a call analysed on the spot runs inside its caller).
+        self._running: list[Task] = []
         #: Tasks left unfinished by an exhausted account: their results are not to be trusted.
         self.abandoned: set[Task] = set()
         self._to_abandon: list[Task] = []
@@ -286,36 +290,57 @@ class Analysis:
                                            "task runs ran out")
                 return
             task = queue.popleft()
-            account = self._queued.pop(task)
+            account = self._queued.pop(task, None)
+            if account is None:
+                continue  # already run on the spot (see :meth:`run_now`)
             if account.runs >= ENTRY_TASK_RUNS:
                 queue.appendleft(task)
                 self._queued[task] = account
                 self._exhaust(account, f"its budget of {ENTRY_TASK_RUNS} task runs ran out")
                 continue
-            self.task_runs += 1
-            account.runs += 1
-            account.spent[task[1]] += 1
-            self._current = account
-            try:
-                ret, effects, calls, falls_off = self._interp.run_task(task)
-            finally:
-                self._current = None
-            self.effects[task] = effects
-            self.calls[task] = calls
-            if falls_off:
-                self.falls_off.add(task)
-            else:
-                self.falls_off.discard(task)
-            if task[0] == "fn":
-                self.write(("ret", task), ret)
-            self._abandon_pending()
+            self._run(task, account)
+
+    def run_now(self, task: Task) -> None:
+        """Run a call's task that is queued and has never run, before the caller reads its
+        return value: it then reads the value complete instead of ⊥ and need not run again
+        once the callee has run (a caller ran about once more per callee otherwise). Not a
+        task already running (recursion), nor deeper than :data:`MAX_NESTED_RUNS`, nor past a
+        budget: those wait in the queue."""
+        account = self._queued.get(task)
+        if account is None or task in self.effects or task in self._running \
+                or len(self._running) >= MAX_NESTED_RUNS or self.stopped \
+                or self.task_runs >= self.max_task_runs or account.runs >= ENTRY_TASK_RUNS:
+            return
+        del self._queued[task]  # its place in the queue is skipped
+        self._run(task, account)
+
+    def _run(self, task: Task, account: Account) -> None:
+        self.task_runs += 1
+        account.runs += 1
+        account.spent[task[1]] += 1
+        outer, self._current = self._current, account
+        self._running.append(task)
+        try:
+            ret, effects, calls, falls_off = self._interp.run_task(task)
+        finally:
+            self._running.pop()
+            self._current = outer
+        self.effects[task] = effects
+        self.calls[task] = calls
+        if falls_off:
+            self.falls_off.add(task)
+        else:
+            self.falls_off.discard(task)
+        if task[0] == "fn":
+            self.write(("ret", task), ret)
+        self._abandon_pending()
 
     def _exhaust(self, account: Account, why: str) -> None:
         """Stop ``account``: its queued tasks are abandoned, and a diagnostic says where."""
         account.exhausted = True
-        mine = [task for task in self._queue if self._queued[task] is account]
+        mine = list(dict.fromkeys(task for task in self._queue if self._queued.get(task) is account))
         if mine:
-            kept = [task for task in self._queue if self._queued[task] is not account]
+            kept = [task for task in self._queue if task in self._queued and self._queued[task] is not account]
             self._queue.clear()
             self._queue.extend(kept)
             for task in mine:
