@@ -97,9 +97,12 @@ CppMemo = Callable[[Callable[[], tuple[list[RosNode], list[Diagnostic]]]], tuple
 
 def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo: CppMemo | None) -> None:
     """Add the workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
-    from .cpp.to_graph import cpp_graph
+    def read() -> tuple[list[RosNode], list[Diagnostic]]:
+        from .cpp.to_graph import cpp_graph  # the parser loads only when the memo has no ends
+        return cpp_graph(root)
+
     try:
-        nodes, cpp_diagnostics = memo(lambda: cpp_graph(root)) if memo is not None else cpp_graph(root)
+        nodes, cpp_diagnostics = memo(read) if memo is not None else read()
     except Exception as exc:
         diagnostics.append(internal_error("C++ sources not read", exc))
         return
