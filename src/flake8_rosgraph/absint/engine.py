@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import ast
 import itertools
+import sys
 from collections import Counter, deque
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
@@ -309,7 +310,8 @@ class Analysis:
         account = self._queued.get(task)
         if account is None or task in self.effects or task in self._running \
                 or len(self._running) >= MAX_NESTED_RUNS or self.stopped \
-                or self.task_runs >= self.max_task_runs or account.runs >= ENTRY_TASK_RUNS:
+                or self.task_runs >= self.max_task_runs or account.runs >= ENTRY_TASK_RUNS \
+                or _stack_deeper_than(sys.getrecursionlimit() // 3):
             return
         del self._queued[task]  # its place in the queue is skipped
         self._run(task, account)
@@ -477,6 +479,16 @@ class Analysis:
             out += group if len(group) == 1 else sorted(group, key=lambda e: repr(e.args))
         self._all_effects = (state, out)
         return list(out)
+
+
+def _stack_deeper_than(frames: int) -> bool:
+    """Whether Python's stack holds more than ``frames`` frames: a task run on the spot nests
+    inside its caller's, and deeply nested code must keep the depth it gets when run alone."""
+    try:
+        sys._getframe(frames)
+    except ValueError:
+        return False
+    return True
 
 
 def _place_and_kind(effect: Effect) -> tuple[str, int, int, str]:
