@@ -717,6 +717,12 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
         return report
 
 
+def can_keep_report(root: Path, settings: Settings) -> bool:
+    """Whether a report of ``root`` built by one process is kept for another (:func:`load_or_build`)."""
+    cache_dir = _cache_dir(Path(os.path.abspath(root)), settings)
+    return machine_secret() is not None and cache_dir is not None and _own_dir(cache_dir)
+
+
 def _read_outlines(cache_dir: Path, secret: bytes) -> dict[str, Any]:
     """The Python files' outlines earlier runs stored (:class:`.workspace.Outlines`), if trusted."""
     obj = read_signed(cache_dir / OUTLINES, secret)

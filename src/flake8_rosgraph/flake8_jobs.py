@@ -1,4 +1,4 @@
-"""flake8 -jN: the workspace analysis runs beside flake8's workers, never inside one.
+"""The workspace analysis runs beside flake8's checks, never inside one.
 
 With ``--jobs`` above 1 flake8 checks files in a pool of worker processes. If the
 checker analysed the workspace there (as it does with ``-j1``), the first worker to
@@ -16,17 +16,31 @@ processor gives — before flake8 filters and reports them as usual.
 Works with the fork, spawn and forkserver start methods (spawned workers learn of
 the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 4.0.1
 (``Manager.checkers``) to 7.x (``Manager.filenames`` / ``Manager.results``).
+
+With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the
+machine has a second core and the cache can keep the report, a forked child process
+analyses meanwhile and leaves the report in the cache; the checkers report nothing, and once
+flake8 is done the main process reads the report and adds each file's results the same way.
+A cold or edited run then costs about the longer of the two instead of their sum. When the
+child could not leave a report (it died, or failed), the main process analyses itself: the
+results never depend on the child.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import multiprocessing
 import os
+import signal
 import threading
 from typing import Any, Callable, Iterator
 
 #: Set by the main process for the workers of its pool: "the ROS results are mine".
 DEFER_ENV = "ROSGRAPH_DEFERRED_TO"
+#: Files a ``-j1`` run must check for a child to analyse beside it: flake8 checks a file in
+#: about a fiftieth of a second, and the main process reads the report again afterwards, so a
+#: run of a few files (pre-commit's) has nothing to gain.
+MIN_FILES_BESIDE = 16
 #: flake8's codes for a file it could not read or parse: the plugin never runs there.
 _UNCHECKED = frozenset({"E902", "E999"})
 
@@ -41,10 +55,24 @@ def deferred() -> bool:
                           and multiprocessing.parent_process() is not None)
 
 
-def install(results_of: Callable[[str], Results], wanted: Callable[[], bool]) -> None:
-    """Wrap ``Manager.run_parallel``: ``results_of(filename)`` is what the checker would
-    yield for a file; ``wanted()`` says whether the current run needs any of it."""
+def install(results_of: Callable[[str], Results], wanted: Callable[[], bool],
+            beside: Callable[[list[str]], bool]) -> None:
+    """Wrap ``Manager.run_parallel`` and ``Manager.run_serial``: ``results_of(filename)`` is what
+    the checker would yield for a file; ``wanted()`` says whether the current run needs any
+    of it; ``beside(filenames)`` whether a child process may analyse while ``-j1`` checks."""
     from flake8 import checker
+
+    serial = checker.Manager.run_serial
+    if not getattr(serial, "_rosgraph_hook", False):
+        @functools.wraps(serial)
+        def run_serial(self: Any) -> Any:
+            filenames = list(_checked_files(self))
+            if _deferring or len(filenames) < MIN_FILES_BESIDE or not wanted() or not beside(filenames):
+                return serial(self)
+            return _run_serial_beside(self, serial, results_of, filenames)
+
+        run_serial._rosgraph_hook = True  # type: ignore[attr-defined]
+        checker.Manager.run_serial = run_serial
 
     original = checker.Manager.run_parallel
     if getattr(original, "_rosgraph_hook", False):
@@ -117,6 +145,42 @@ def _run_parallel(manager: Any, original: Callable[[Any], Any],
             os.environ[DEFER_ENV] = previous
     _add_results(manager, analysis.wait())
     return outcome
+
+
+def _run_serial_beside(manager: Any, original: Callable[[Any], Any], results_of: Callable[[str], Results],
+                       filenames: list[str]) -> Any:
+    global _deferring
+    child = os.fork()
+    if child == 0:  # the child analyses (the cache keeps the report) and never returns into flake8
+        status = 1
+        try:
+            for filename in filenames:
+                results_of(filename)
+            status = 0
+        finally:
+            os._exit(status)
+    _deferring = True
+    try:
+        outcome = original(manager)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.kill(child, signal.SIGTERM)
+            os.waitpid(child, 0)
+        raise
+    finally:
+        _deferring = False
+    with contextlib.suppress(ChildProcessError):
+        os.waitpid(child, 0)
+    _add_results(manager, {filename: results_of(filename) for filename in filenames})
+    return outcome
+
+
+def cores() -> int:
+    """The CPUs this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not on Linux
+        return os.cpu_count() or 1
 
 
 def _checked_files(manager: Any) -> Iterator[str]:

@@ -37,7 +37,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterator
 
 from . import __version__, flake8_jobs
-from .cache import WorkspaceReport, start_run, workspace_report
+from .cache import WorkspaceReport, can_keep_report, start_run, workspace_report
 from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
                       root_problem)
@@ -285,7 +285,8 @@ class RosGraphChecker:
             _RUN = _Run(settings, CodeFilter(), error=_describe(exc))
         _install_report_hook()
         flake8_jobs.install(lambda filename: checker_results(_current_run(), filename),
-                            lambda: _RUN is not None and _RUN.error is None and _RUN.selected)
+                            lambda: _RUN is not None and _RUN.error is None and _RUN.selected,
+                            _analyse_beside)
 
     def run(self) -> Iterator[tuple[int, int, str, type]]:
         try:
@@ -298,6 +299,23 @@ class RosGraphChecker:
         _note_buffer(run, self.filename, self.lines)
         for line, column, text in checker_results(run, self.filename):
             yield line, column, text, type(self)
+
+
+def _analyse_beside(filenames: list[str]) -> bool:
+    """Whether flake8 -j1 may leave the analysis to a child process while it checks the files
+    (:mod:`.flake8_jobs`): a second core to run it on, ``fork``, a cache to hand the report
+    over in for every workspace checked; not for an editor's buffer, nor under
+    ``--rosgraph-debug`` (a traceback belongs to the process the user runs)."""
+    run = _RUN
+    if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or flake8_jobs.cores() < 2:
+        return False
+    roots: set[Path] = set()
+    for filename in filenames:
+        try:
+            roots.add(_root_for(run, Path(os.path.abspath(filename))))
+        except RootRefused:
+            continue
+    return bool(roots) and all(can_keep_report(root, run.settings) for root in roots)
 
 
 def _given_folders(options: Any) -> tuple[Path, ...]:

@@ -8,6 +8,8 @@ from pathlib import Path
 
 import pytest
 
+from flake8_rosgraph.flake8_jobs import MIN_FILES_BESIDE
+
 from .conftest import _FLAKE8_UNDER, EXPECTED_STANDARD, analyses, fake_env, parse_flake8, run_flake8
 
 
@@ -73,6 +75,55 @@ def test_with_jobs_the_main_process_analyses_and_no_worker_waits(python: str, wo
     log = tmp_path / "analyses.log"
     child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, method, "--isolated", "--jobs", "2",
                               "--select", "ROS", "."], cwd=workspace, env=fake_env(log),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = child.communicate(timeout=600)
+    assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
+    assert [line.split()[0] for line in analyses(log)] == [str(child.pid)]
+
+
+def _with_utilities(workspace: Path) -> Path:
+    """The workspace with enough modules that a ``-j1`` run analyses beside its checks."""
+    for number in range(MIN_FILES_BESIDE):
+        (workspace / f"src/pkg_a/pkg_a/util_{number}.py").write_text(f"SCALE_{number} = {number}\n")
+    return workspace
+
+
+@pytest.mark.parametrize("delay", ["0", "3"])
+def test_with_one_job_a_child_analyses_while_flake8_checks(python: str, workspace: Path, tmp_path: Path,
+                                                           delay: str) -> None:
+    """flake8 -j1 checks the files itself while a child process analyses and leaves the report in
+    the cache; the main process adds the findings afterwards, the same as one process finds,
+    however long the analysis takes."""
+    log = tmp_path / "analyses.log"
+    child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
+                              "--select", "ROS", "."], cwd=_with_utilities(workspace),
+                             env=fake_env(log, FAKE_ROSGRAPH_DELAY=delay),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = child.communicate(timeout=600)
+    assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
+    [(pid, parent)] = [line.split()[:2] for line in analyses(log)]
+    assert parent == str(child.pid) and pid != str(child.pid)
+
+
+def test_a_run_of_a_few_files_analyses_in_flake8s_process(python: str, workspace: Path, tmp_path: Path) -> None:
+    """pre-commit's handful of files: nothing to overlap, so no child."""
+    log = tmp_path / "analyses.log"
+    child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
+                              "--select", "ROS", "src/pkg_b/pkg_b/listener.py"], cwd=_with_utilities(workspace),
+                             env=fake_env(log), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = child.communicate(timeout=600)
+    assert parse_flake8(stdout) == [("src/pkg_b/pkg_b/listener.py", 7, 10, "ROS003")], stderr
+    assert [line.split()[0] for line in analyses(log)] == [str(child.pid)]
+
+
+def test_with_one_job_and_no_cache_flake8_analyses_itself(python: str, workspace: Path, tmp_path: Path) -> None:
+    """Without a cache to hand the report over in, no child is started: one analysis, here."""
+    log = tmp_path / "analyses.log"
+    (tmp_path / "home").mkdir()
+    (tmp_path / "home" / ".cache").write_text("not a folder: no signing key can be kept")
+    child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
+                              "--select", "ROS", "."], cwd=_with_utilities(workspace),
+                             env=fake_env(log, HOME=str(tmp_path / "home"), XDG_CACHE_HOME=str(tmp_path / "home" / ".cache")),
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     stdout, stderr = child.communicate(timeout=600)
     assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr

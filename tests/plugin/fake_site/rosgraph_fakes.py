@@ -7,7 +7,7 @@ calls, one node per file; ``$FAKE_ROSGRAPH_DELAY`` seconds slow) and ``flake8_ro
 topic nobody subscribes, ROS003 for one nobody publishes, ROS002 for a file that
 subscribes to its own topic, ROS010 for a name that is not a literal). Real
 ``RULES`` metadata stays in place. A file containing ``FAKE_CRASH`` makes the
-analysis raise. Each analysis appends ``<pid> <root>`` to ``$FAKE_ROSGRAPH_LOG``.
+analysis raise. Each analysis appends ``<pid> <parent pid> <root>`` to ``$FAKE_ROSGRAPH_LOG``.
 
 In-process tests call :func:`install`; subprocesses get it from the
 ``sitecustomize`` next to this file (put this directory on ``PYTHONPATH``), which
@@ -34,7 +34,7 @@ def build_graph(root, stub_files=(), interface_dirs=(), buffers=(), *_cache_part
     log = os.environ.get("FAKE_ROSGRAPH_LOG")
     if log:
         with open(log, "a", encoding="utf-8") as handle:
-            handle.write(f"{os.getpid()} {root}\n")
+            handle.write(f"{os.getpid()} {os.getppid()} {root}\n")
     time.sleep(float(os.environ.get("FAKE_ROSGRAPH_DELAY", "0")))
     graph = RosGraph()
     for path in sorted(root.rglob("*.py")):
