@@ -665,8 +665,9 @@ def build_report(root: Path, settings: Settings, buffers: Buffers = (),
     return WorkspaceReport(root, tuple(sorted(safe)), tuple(sorted(set(graph.diagnostics))))
 
 
-def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
-    """The report for ``root``: from the cache when a valid entry exists, else built and stored.
+def load_or_build(root: Path, settings: Settings, build: bool = True) -> WorkspaceReport | None:
+    """The report for ``root``: from the cache when a valid entry exists, else built and stored
+    (without ``build``: ``None`` instead).
 
     The disk cache is used only with this user's signing secret and in a folder
     the tool owns (see :func:`_own_dir`); otherwise each run analyses afresh,
@@ -676,13 +677,13 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
     secret = machine_secret()
     cache_dir = _cache_dir(root, settings)
     if secret is None or cache_dir is None:
-        return build_report(root, settings)
+        return build_report(root, settings) if build else None
     digests = InputDigests.load(cache_dir, secret)
     key = cache_key(root, settings, digests)
     digests.store(cache_dir, secret)
     entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
-    if cached is not None:
+    if cached is not None or not build:
         return cached  # the common case: nothing else to key, import or read
     with contextlib.ExitStack() as stack:
         locked = False
@@ -717,10 +718,19 @@ def load_or_build(root: Path, settings: Settings) -> WorkspaceReport:
         return report
 
 
-def can_keep_report(root: Path, settings: Settings) -> bool:
-    """Whether a report of ``root`` built by one process is kept for another (:func:`load_or_build`)."""
-    cache_dir = _cache_dir(Path(os.path.abspath(root)), settings)
-    return machine_secret() is not None and cache_dir is not None and _own_dir(cache_dir)
+def kept_state(root: Path, settings: Settings) -> str:
+    """Whether the cache keeps the report of ``root``: ``"kept"`` (then it is remembered for
+    this run, see :func:`workspace_report`), ``"missing"`` (another process may build it for
+    this one), or ``"uncacheable"`` (no secret, or no folder the tool owns)."""
+    root = Path(os.path.abspath(root))
+    cache_dir = _cache_dir(root, settings)
+    if machine_secret() is None or cache_dir is None or not _own_dir(cache_dir):
+        return "uncacheable"
+    kept = load_or_build(root, settings, build=False)
+    if kept is None:
+        return "missing"
+    _MEMO[(root, settings, ())] = kept
+    return "kept"
 
 
 def _read_outlines(cache_dir: Path, secret: bytes) -> dict[str, Any]:

@@ -37,7 +37,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterator
 
 from . import __version__, flake8_jobs
-from .cache import WorkspaceReport, can_keep_report, start_run, workspace_report
+from .cache import WorkspaceReport, kept_state, start_run, workspace_report
 from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
                       root_problem)
@@ -304,8 +304,9 @@ class RosGraphChecker:
 def _analyse_beside(filenames: list[str]) -> bool:
     """Whether flake8 -j1 may leave the analysis to a child process while it checks the files
     (:mod:`.flake8_jobs`): a second core to run it on, ``fork``, a cache to hand the report
-    over in for every workspace checked; not for an editor's buffer, nor under
-    ``--rosgraph-debug`` (a traceback belongs to the process the user runs)."""
+    over in for every workspace checked, and some report not kept there yet (a warm run reads
+    them here); not for an editor's buffer, nor under ``--rosgraph-debug`` (a traceback
+    belongs to the process the user runs)."""
     run = _RUN
     if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or flake8_jobs.cores() < 2:
         return False
@@ -315,7 +316,8 @@ def _analyse_beside(filenames: list[str]) -> bool:
             roots.add(_root_for(run, Path(os.path.abspath(filename))))
         except RootRefused:
             continue
-    return bool(roots) and all(can_keep_report(root, run.settings) for root in roots)
+    states = {kept_state(root, run.settings) for root in sorted(roots)}
+    return "missing" in states and "uncacheable" not in states
 
 
 def _given_folders(options: Any) -> tuple[Path, ...]:
