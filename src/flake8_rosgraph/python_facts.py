@@ -17,7 +17,8 @@ from typing import Sequence
 
 from .absint.engine import Analysis
 from .graph.builder import build_graph_from
-from .graph.messages import MessageFacts, message_facts
+from .graph.message_builder import message_facts
+from .graph.messages import MessageFacts
 from .graph.model import Diagnostic, RosNode, internal_error
 from .graph.usage import UsageFacts, callback_order
 from .launch.actions import Action

@@ -26,7 +26,7 @@ from . import names
 from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
-from .usage import build_usage
+from .usage_builder import build_usage
 
 #: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
 ENTITY_KINDS: dict[str, tuple[str, str]] = {
