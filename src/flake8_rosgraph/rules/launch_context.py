@@ -34,3 +34,35 @@ def in_package(node: RosNode, packages: frozenset[str]) -> bool:
 def launched_in_namespace(node: RosNode) -> bool:
     """Whether a launch file starts this node copy in a namespace other than the root."""
     return node.launch is not None and bool((node.namespace or "/").strip("/"))
+
+
+def unseen_remap_targets(graph: RosGraph) -> frozenset[str]:
+    """The names a launch file remaps a node of unseen code onto (an installed package's
+    executable, a C++ one whose names the analysis reads in part): the launch file says that
+    node uses the name, in a role the analysis cannot see, so it may be the missing other end.
+
+    A relative target lands in the node's namespace; a private one (``~/x``) or one under an
+    unknown namespace is left out: its full name is not known.
+    """
+    out: set[str] = set()
+    for system in graph.systems:
+        analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
+        for launched in system.nodes:
+            if id(launched) in analysed:
+                continue
+            for remap in launched.remaps:
+                name = _landing(remap.target, launched.namespace)
+                if name is not None:
+                    out.add(name)
+    return frozenset(out)
+
+
+def _landing(target: str, namespace: str | None) -> str | None:
+    """Where a remap target lands for a node in ``namespace`` (``None``: not known statically)."""
+    if not target or target.startswith("~") or "$" in target or "{" in target:
+        return None
+    if target.startswith("/"):
+        return target
+    if namespace is None:
+        return None
+    return namespace.rstrip("/") + "/" + target
