@@ -47,6 +47,9 @@ outside the workspace by nature: see :mod:`.infrastructure`), when
 A name a launch file remaps such a node of unseen code onto (``teleop_twist_joy``
 started with ``('/cmd_vel', '/cmd_vel_intuitive')``) is not dangling at all: the
 launch file says that program uses it, and it is the other end the analysis cannot see.
+Likewise a name a node hands, together with itself, to a library no stub models
+(``hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)``), and the names
+under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`).
 
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
@@ -78,7 +81,7 @@ from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
 from .infrastructure import infrastructure_slip
-from .launch_context import unseen_remap_targets
+from .launch_context import under_any, unseen_code_names, unseen_remap_targets
 from .near_miss import NearMissFinder
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
@@ -99,12 +102,12 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = unseen_remap_targets(graph)
+        unseen = unseen_remap_targets(graph) | unseen_code_names(graph)
         peer_kind = PEER_KIND[self.kind]
         scopes = LaunchScopes(graph.systems)
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                       and ep.entity.name not in unseen
+                       and not under_any(ep.entity.name, unseen)
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return

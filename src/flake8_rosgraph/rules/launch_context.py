@@ -8,6 +8,7 @@ at the root.
 """
 from __future__ import annotations
 
+from ..graph import names
 from ..graph.model import RosGraph, RosNode
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
@@ -66,3 +67,36 @@ def _landing(target: str, namespace: str | None) -> str | None:
     if namespace is None:
         return None
     return namespace.rstrip("/") + "/" + target
+
+
+def unseen_code_names(graph: RosGraph) -> frozenset[str]:
+    """The names nodes hand, with themselves, to a library the analysis cannot see into
+    (:attr:`~flake8_rosgraph.graph.model.RosNode.unseen_names`), expanded where each node
+    runs: in code as written, and as each launch file starts it."""
+    out: set[str] = set()
+    placed = [(node, node, []) for node in graph.nodes if node.launch is None]
+    placed += [(instance.node, instance.code,
+                [names.RemapRule(r.source, r.target) for r in instance.launched.remaps])
+               for system in graph.systems for instance in system.instances]
+    for node, code, rules in placed:
+        if node.name is None or node.namespace is None:
+            continue
+        for raw in code.unseen_names:
+            expanded, _ = names.expand_topic_name(raw, node.name, node.namespace)
+            if expanded is None:
+                continue
+            out.add(expanded)
+            rule = names.first_remap_match(expanded, rules, node.name, node.namespace)
+            if rule is not None:  # the launch file moves the library's end too
+                remapped, _ = names.expand_topic_name(rule.replacement, node.name, node.namespace)
+                if remapped is not None:
+                    out.add(remapped)
+    return frozenset(out)
+
+
+def under_any(name: str | None, roots: frozenset[str]) -> bool:
+    """Whether ``name`` is one of ``roots`` or lies under one (a library handed ``image_raw``
+    may derive ``image_raw/compressed``)."""
+    if name is None:
+        return False
+    return name in roots or any(name.startswith(root.rstrip("/") + "/") for root in roots)

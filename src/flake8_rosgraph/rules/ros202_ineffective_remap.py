@@ -26,6 +26,10 @@ def _judgeable(instance: Instance, remap: Remap) -> bool:
         return False
     if remap.source.startswith("__"):
         return False  # __node, __ns, __log_level … are not topic remaps
+    if any(remap.source == name or remap.source.startswith(name.rstrip("/") + "/")
+           for name in instance.code.unseen_names):
+        return False  # the node hands this name to a library the analysis cannot see into,
+        # which may also derive names under it (``image_raw/filter_state``)
     expanded, _ = names.expand_topic_name(remap.source, node.name, node.namespace)
     if expanded is None:
         return False  # ROS203 reports an invalid source
@@ -51,7 +55,11 @@ class IneffectiveRemap(Rule):
 
     ## Known problems
     Only nodes whose code is in the workspace and whose every name is known
-    are judged (a C++ node's names are not). A `SetRemap` is reported only
+    are judged (a C++ node's names are not), and a source the node's class
+    writes as an argument of a call that hands the node to an unmodelled
+    library (`hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)`)
+    is taken as used, with the names under it: that library makes the end,
+    and may derive more (`image_raw/filter_state`). A `SetRemap` is reported only
     when it matches no name of any node it applies to. Remaps of the names
     rcl uses implicitly (`/rosout`, `/parameter_events`, a node's built-in
     parameter, logger and lifecycle services) and special rules (`__ns`,
