@@ -60,7 +60,9 @@ class IneffectiveRemap(Rule):
     library (`hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)`)
     is taken as used, with the names under it: that library makes the end,
     and may derive more (`image_raw/filter_state`). A `SetRemap` is reported only
-    when it matches no name of any node it applies to. Remaps of the names
+    when it matches no name of any node it applies to; likewise a node's own
+    rule when its executable creates several nodes (rcl hands the process's
+    rules to each of them). Remaps of the names
     rcl uses implicitly (`/rosout`, `/parameter_events`, a node's built-in
     parameter, logger and lifecycle services) and special rules (`__ns`,
     `__node`) are not judged; other private names (`~/status`) are. The
@@ -93,11 +95,21 @@ class IneffectiveRemap(Rule):
     def _system(self, system: System) -> Iterator[Finding]:
         # A remap (by its position in a launched node's list) → the instances it applies to.
         scope_rules: dict[Remap, list[tuple[Instance, int]]] = {}
+        # rcl hands a process's remap rules to every node it creates: a rule of one launch
+        # action is effective when it matches a name of any of the executable's nodes.
+        hits: dict[int, set[int]] = {}
+        judged: dict[int, list[Instance]] = {}
         for instance in system.instances:
+            hits.setdefault(id(instance.launched), set()).update(instance.remap_hits)
+            judged.setdefault(id(instance.launched), []).append(instance)
+        for instance in system.instances:
+            # one finding per launch action, told on the node that uses the most names
+            first = max(judged[id(instance.launched)], key=lambda inst: len(inst.expanded)) is instance
             for index, remap in enumerate(instance.launched.remaps):
                 if remap.from_scope:
                     scope_rules.setdefault(remap, []).append((instance, index))
-                elif index not in instance.remap_hits and _judgeable(instance, remap):
+                elif first and index not in hits[id(instance.launched)] \
+                        and all(_judgeable(inst, remap) for inst in judged[id(instance.launched)]):
                     yield self._finding(remap, instance)
         for remap, uses in scope_rules.items():
             if any(index in inst.remap_hits for inst, index in uses):
