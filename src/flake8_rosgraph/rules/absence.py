@@ -10,7 +10,10 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   type and known end (:attr:`~flake8_rosgraph.graph.model.Entity.name_suffix`) that do
   not rule the match out — unless the name is a slip of the pen for a name used in
   the other role with the same message type (``/odmo`` beside ``/odom``): one unknown
-  elsewhere hardly happens to be exactly the misspelt name;
+  elsewhere hardly happens to be exactly the misspelt name. An end whose type is
+  unknown too (a test harness or recorder whose topics come from a plan at run
+  time) could be any topic at all: it fills only gaps of its own package or launch
+  file (:func:`.topics.near`), never the whole workspace's;
 * the end's name is known only partly (``param if launched else '/scan'``): its
   site's unknown alternative may be connected. A partly known end does count as
   the present other end of its name (``/scan`` above satisfies a subscriber of
