@@ -43,3 +43,38 @@ def test_leading_slash_slip_is_a_near_miss():
     g = graph(node("arm", sub("/arm/status"), namespace="/arm"), node("hw", pub("/status")))
     assert messages(g, select=["ROS003"]) == [
         "ROS003 topic '/arm/status' has no publisher; did you mean '/status' (published at hw.py:2)?"]
+
+
+GPS = "sailing_msgs/msg/GPS"
+
+
+def sailing(gps_topic, *harness):
+    """A navigator fed by a simulator, beside a test harness whose topics come from a plan."""
+    return graph(
+        node("navigate", sub(gps_topic, type=GPS), sub("/wind", type=GPS), pub("/heading"),
+             path="src/pathfinding/pathfinding/navigate.py"),
+        node("simulator", pub("/gps", type=GPS), pub("/wind", type=GPS), sub("/heading"),
+             path="src/simulator/simulator/physics.py"),
+        *harness)
+
+
+def test_an_end_of_unknown_name_and_type_does_not_fill_another_packages_gap():
+    harness = node("integration_test", pub(None, type=None), path="src/integration_tests/integration_tests/run.py")
+    assert messages(sailing("/sensors/gps", harness), select=["ROS003"]) == [
+        "ROS003 topic '/sensors/gps' has no publisher; did you mean '/gps' "
+        "(published at src/simulator/simulator/physics.py:2)?"]
+
+
+def test_an_end_of_unknown_name_and_type_fills_a_gap_of_its_own_package():
+    replay = node("replay", pub(None, type=None), path="src/pathfinding/pathfinding/replay.py")
+    assert codes(sailing("/sensors/gps", replay), select=["ROS003"]) == []
+
+
+def test_an_end_of_unknown_name_and_known_type_fills_gaps_anywhere():
+    harness = node("integration_test", pub(None, type=GPS), path="src/integration_tests/integration_tests/run.py")
+    assert codes(sailing("/sensors/gps", harness), select=["ROS003"]) == []
+
+
+def test_the_correct_name_is_quiet_beside_the_harness():
+    harness = node("integration_test", pub(None, type=None), path="src/integration_tests/integration_tests/run.py")
+    assert codes(sailing("/gps", harness), select=["ROS003"]) == []

@@ -20,12 +20,14 @@ from dataclasses import dataclass
 from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
+from ..absint.objects import analysed_user_bases
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Input,
                              Joined, Obj, Record, Seq, Slot, Coll, Value, wrapped)
 from . import names
 from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
+from .unseen_calls import HELD, SELF, helpers_handed, names_handed_to_unseen_code
 from .usage_builder import build_usage
 
 #: Effect kind → graph entity kind (JSON list name) and the argument holding its name.
@@ -181,6 +183,9 @@ class GraphBuilder:
         self.by_object: dict[str, list[RosNode]] = {}  # allocation site -> nodes it may be
         self.remaps: dict[int, tuple[names.RemapRule, ...]] = {}  # id(node) -> its cli_args rules
         self.process_args: dict[Effect, CommandLine] = {}  # node effect -> its rclpy.init arguments
+        self._unseen: dict[int, tuple[str, ...]] = {}  # class id -> its names handed to unseen code
+        self._by_short_name: dict[str, list[int]] | None = None
+        self._workspace_tops = frozenset(name.split(".", 1)[0] for name in self.program.modules)
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
@@ -245,12 +250,51 @@ class GraphBuilder:
                         node = self.nodes[key] = RosNode(
                             name, ns, location, _class_name(self.program, obj),
                             conditional=eff.conditional, invalid=_node_problem(name, ns),
-                            local_overrides=cli.overrides)
+                            local_overrides=cli.overrides, unseen_names=self._unseen_names(obj))
                     if cli.remaps:
                         self.remaps[id(node)] = cli.remaps
                     known = self.by_object.setdefault(obj.site, [])
                     if all(n is not node for n in known):
                         known.append(node)
+
+    def _unseen_names(self, obj: Obj) -> tuple[str, ...]:
+        """The names the node's class hands, with itself, to code neither analysed nor modelled."""
+        if not isinstance(obj.cls, ClassAtom):
+            return ()
+        cid = obj.cls.cid
+        if cid not in self._unseen:
+            found: set[str] = set()
+            # The class and its workspace bases hand over ``self``; a workspace helper class it
+            # hands itself to (``MovementCommands(self)``) hands over what it holds.
+            todo: list[tuple[int, str]] = [(cid, SELF)]
+            done: set[tuple[int, str]] = set()
+            while todo:
+                cur, receiver = todo.pop()
+                if (cur, receiver) in done:
+                    continue
+                done.add((cur, receiver))
+                klass = self.program.classes[cur]
+                tree = klass.module.tree
+                found.update(names_handed_to_unseen_code(klass.node, tree, self._seen, receiver))
+                todo.extend((base, receiver) for base in analysed_user_bases(self.analysis.heap, cur))
+                if receiver == SELF:
+                    todo.extend((helper, HELD) for name in helpers_handed(klass.node)
+                                for helper in self._classes_named().get(name, ()))
+            self._unseen[cid] = tuple(sorted(found))
+        return self._unseen[cid]
+
+    def _classes_named(self) -> dict[str, list[int]]:
+        """Workspace classes by their own name (the last part of the qualified name)."""
+        if self._by_short_name is None:
+            self._by_short_name = {}
+            for klass in self.program.classes:
+                self._by_short_name.setdefault(klass.qualname.rsplit(".", 1)[-1], []).append(klass.cid)
+        return self._by_short_name
+
+    def _seen(self, callee: str) -> bool:
+        """Whether the analysis sees into ``callee``: workspace code, or a modelled library."""
+        top = callee.split(".", 1)[0]
+        return top in self._workspace_tops or top == "rclpy" or self.analysis.library.knows(callee)
 
     def _add_presumed_node(self, eff: Effect) -> None:
         """The node an object of a class with an unresolved base is presumed to be, when the

@@ -22,6 +22,7 @@ answers for all of them.
 """
 from __future__ import annotations
 
+import ast
 from collections import deque
 from typing import Mapping, Sequence
 
@@ -87,6 +88,7 @@ class EntryReach:
         self.executables = executables
         self.callees: dict[tuple, set[tuple]] = {}
         self._walks: dict[Executable, tuple | None] = {}
+        self._guarded: dict[str, frozenset[int]] = {}
         for key, readers in analysis.readers.items():
             callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
             if callee is None:
@@ -139,6 +141,26 @@ class EntryReach:
                 foreign |= walked[3]
         return tuple(sorted(foreign - ends))
 
+    def _methods_of(self, class_names: set[str | None]) -> set[tuple]:
+        """The analysed tasks of the methods of the workspace classes named ``class_names``."""
+        program = self.analysis.program
+        fids = {f.fid for f in program.functions
+                if f.cls is not None and program.classes[f.cls].qualname in class_names}
+        return {task for task in self.analysis.effects if task[0] == "fn" and task[1] in fids}
+
+    def _main_guarded(self, task: tuple) -> frozenset[int]:
+        """The top-level functions of ``task``'s module that its top level calls only under
+        ``if __name__ == '__main__':`` — not run when another module imports it (a helper
+        imported from another node's script does not start that script's node)."""
+        known = self._guarded.get(task[1])
+        if known is None:
+            module = self.analysis.program.modules.get(task[1])
+            names = _main_guard_calls(module.tree) if module is not None else frozenset()
+            known = self._guarded[task[1]] = frozenset(
+                f.fid for f in self.analysis.program.functions
+                if f.module is module and f.parent is None and f.cls is None and f.qualname in names)
+        return known
+
     def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location],
                                                       list[tuple[Location, str | None]], frozenset[Location]]:
         """The node sites reachable from ``starts``, those open to any parameter, the
@@ -146,15 +168,27 @@ class EntryReach:
         the reachable code creates."""
         seen = set(starts)
         queue = deque(starts)
+        started = frozenset(starts)
         sites: set[Location] = set()
         open_sites: set[Location] = set()
         classes: set[tuple[Location, str | None]] = set()
         ends: set[Location] = set()
-        while queue:
+        entry_reached = True
+        while queue or entry_reached:
+            if not queue:
+                # What the entry point reached is walked; the methods of the node classes it
+                # creates run in this process too (as callbacks): a node they create is one of
+                # its nodes. Their ends stay every executable's of the class (module docstring).
+                entry_reached = False
+                methods = self._methods_of({cls for _, cls in classes}) - seen
+                seen |= methods
+                queue.extend(sorted(methods, key=repr))
+                continue
             task = queue.popleft()
             for eff in self.analysis.effects.get(task, {}).values():
                 if eff.kind != "node":
-                    ends.add(Location(eff.path, eff.line, eff.column))
+                    if entry_reached:
+                        ends.add(Location(eff.path, eff.line, eff.column))
                     continue
                 site = Location(eff.path, eff.line, eff.column)
                 sites.add(site)
@@ -166,8 +200,45 @@ class EntryReach:
                     open_sites.add(site)
                 if "auto_declare" in args and args["auto_declare"].consts() != [False]:
                     open_sites.add(site)
+            skipped = self._main_guarded(task) if task[0] == "mod" and task not in started else ()
             for callee in sorted(self.callees.get(task, ()), key=repr):
-                if callee not in seen:
+                if callee not in seen and not (callee[0] == "fn" and callee[1] in skipped):
                     seen.add(callee)
                     queue.append(callee)
         return sorted(sites), sorted(open_sites), sorted(classes, key=repr), frozenset(ends)
+
+
+def _is_main_guard(test: ast.expr) -> bool:
+    """``__name__ == '__main__'`` (either way round)."""
+    if not isinstance(test, ast.Compare) or len(test.ops) != 1 or not isinstance(test.ops[0], ast.Eq):
+        return False
+    sides = [test.left, test.comparators[0]]
+    return any(isinstance(x, ast.Name) and x.id == "__name__" for x in sides) and \
+        any(isinstance(x, ast.Constant) and x.value == "__main__" for x in sides)
+
+
+def _called_names(nodes: list[ast.stmt]) -> set[str]:
+    """Plain names called in ``nodes``, outside function and class bodies."""
+    found: set[str] = set()
+    todo: list[ast.AST] = list(nodes)
+    while todo:
+        cur = todo.pop()
+        if isinstance(cur, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+            continue
+        if isinstance(cur, ast.Call) and isinstance(cur.func, ast.Name):
+            found.add(cur.func.id)
+        todo.extend(ast.iter_child_nodes(cur))
+    return found
+
+
+def _main_guard_calls(tree: ast.Module) -> frozenset[str]:
+    """Names the module's top level calls under a ``__main__`` guard and nowhere else."""
+    guarded: list[ast.stmt] = []
+    rest: list[ast.stmt] = []
+    for stmt in tree.body:
+        if isinstance(stmt, ast.If) and _is_main_guard(stmt.test):
+            guarded.extend(stmt.body)
+            rest.extend(stmt.orelse)
+        else:
+            rest.append(stmt)
+    return frozenset(_called_names(guarded) - _called_names(rest))

@@ -17,39 +17,50 @@ import re
 from dataclasses import dataclass
 from typing import Iterable
 
-#: (pattern, why it is exempt). Exact names first, then per-node built-in endpoints.
-BUILTIN_EXEMPT: tuple[tuple[str, str], ...] = (
-    ("/rosout", "every node publishes its log here; rcl logging, rqt_console and bags consume it"),
+#: (pattern, why it is exempt, the one message type it carries or None). Exact names first, then
+#: per-node built-in endpoints. The typed ones are infrastructure topics whose slips of the pen
+#: :mod:`.infrastructure` recognises.
+_EXEMPT: tuple[tuple[str, str, str | None], ...] = (
+    ("/rosout", "every node publishes its log here; rcl logging, rqt_console and bags consume it", None),
     ("/parameter_events", "every node publishes parameter changes here; `ros2 param` and parameter "
-                          "event handlers consume it"),
+                          "event handlers consume it", None),
     ("/tf", "the transform tree: broadcast and buffered by tf2 in C++ nodes, rviz and "
-            "robot_state_publisher"),
-    ("/tf_static", "static transforms, usually from robot_state_publisher or static_transform_publisher"),
+            "robot_state_publisher", "tf2_msgs/msg/TFMessage"),
+    ("/tf_static", "static transforms, usually from robot_state_publisher or static_transform_publisher",
+     "tf2_msgs/msg/TFMessage"),
     ("/clock", "published by simulators and `ros2 bag play --clock`; every node with use_sim_time "
-               "subscribes"),
-    ("/diagnostics", "aggregated by diagnostic_aggregator and shown by rqt_robot_monitor, both C++ tools"),
-    ("/robot_description", "published (latched) by robot_state_publisher from the URDF"),
+               "subscribes", "rosgraph_msgs/msg/Clock"),
+    ("/diagnostics", "aggregated by diagnostic_aggregator and shown by rqt_robot_monitor, both C++ tools",
+     "diagnostic_msgs/msg/DiagnosticArray"),
+    ("/robot_description", "published (latched) by robot_state_publisher from the URDF",
+     "std_msgs/msg/String"),
     ("/joint_states", "joint_state_publisher or ros2_control's joint_state_broadcaster publish it, "
-                      "robot_state_publisher consumes it; Python code is usually one half of that pair"),
-    ("/initialpose", "published by rviz2's '2D Pose Estimate' tool"),
-    ("/goal_pose", "published by rviz2's '2D Goal Pose' tool"),
-    ("/clicked_point", "published by rviz2's 'Publish Point' tool"),
-    ("/**/describe_parameters", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/get_parameter_types", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/get_parameters", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/list_parameters", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/set_parameters", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/set_parameters_atomically", "parameter service every node serves (rclpy, rclcpp)"),
-    ("/**/get_type_description", "type description service every node serves (Jazzy and later)"),
-    ("/**/get_logger_levels", "logger service a node serves when started with the logger service enabled"),
-    ("/**/set_logger_levels", "logger service a node serves when started with the logger service enabled"),
-    ("/**/change_state", "lifecycle service every lifecycle node serves (also C++ ones)"),
-    ("/**/get_state", "lifecycle service every lifecycle node serves (also C++ ones)"),
-    ("/**/get_available_states", "lifecycle service every lifecycle node serves (also C++ ones)"),
-    ("/**/get_available_transitions", "lifecycle service every lifecycle node serves (also C++ ones)"),
-    ("/**/get_transition_graph", "lifecycle service every lifecycle node serves (also C++ ones)"),
-    ("/**/transition_event", "lifecycle topic every lifecycle node publishes (also C++ ones)"),
+                      "robot_state_publisher consumes it; Python code is usually one half of that pair",
+     "sensor_msgs/msg/JointState"),
+    ("/initialpose", "published by rviz2's '2D Pose Estimate' tool",
+     "geometry_msgs/msg/PoseWithCovarianceStamped"),
+    ("/goal_pose", "published by rviz2's '2D Goal Pose' tool", "geometry_msgs/msg/PoseStamped"),
+    ("/clicked_point", "published by rviz2's 'Publish Point' tool", "geometry_msgs/msg/PointStamped"),
+    ("/**/describe_parameters", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/get_parameter_types", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/get_parameters", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/list_parameters", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/set_parameters", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/set_parameters_atomically", "parameter service every node serves (rclpy, rclcpp)", None),
+    ("/**/get_type_description", "type description service every node serves (Jazzy and later)", None),
+    ("/**/get_logger_levels", "logger service a node serves when started with the logger service enabled", None),
+    ("/**/set_logger_levels", "logger service a node serves when started with the logger service enabled", None),
+    ("/**/change_state", "lifecycle service every lifecycle node serves (also C++ ones)", None),
+    ("/**/get_state", "lifecycle service every lifecycle node serves (also C++ ones)", None),
+    ("/**/get_available_states", "lifecycle service every lifecycle node serves (also C++ ones)", None),
+    ("/**/get_available_transitions", "lifecycle service every lifecycle node serves (also C++ ones)", None),
+    ("/**/get_transition_graph", "lifecycle service every lifecycle node serves (also C++ ones)", None),
+    ("/**/transition_event", "lifecycle topic every lifecycle node publishes (also C++ ones)", None),
 )
+#: (pattern, why it is exempt), for the docs and the lookups.
+BUILTIN_EXEMPT: tuple[tuple[str, str], ...] = tuple((pattern, why) for pattern, why, _ in _EXEMPT)
+#: Infrastructure topics and the one type each carries.
+INFRASTRUCTURE_TYPES: dict[str, str] = {pattern: kind for pattern, _, kind in _EXEMPT if kind is not None}
 
 _WILDCARDS = re.compile(r"\*\*|\*|\?")
 _WILDCARD_REGEX = {"**": ".*", "*": "[^/]*", "?": "[^/]"}

@@ -13,21 +13,9 @@ multi-robot systems use these topics, and is never taken for a slip.
 """
 from __future__ import annotations
 
+from .exempt import INFRASTRUCTURE_TYPES
 from .near_miss import NearMissFinder, folded, is_family
 from .topics import Endpoint
-
-#: Infrastructure topics (a subset of the exempt names) and the one type each carries.
-INFRASTRUCTURE_TYPES: dict[str, str] = {
-    "/tf": "tf2_msgs/msg/TFMessage",
-    "/tf_static": "tf2_msgs/msg/TFMessage",
-    "/clock": "rosgraph_msgs/msg/Clock",
-    "/diagnostics": "diagnostic_msgs/msg/DiagnosticArray",
-    "/robot_description": "std_msgs/msg/String",
-    "/joint_states": "sensor_msgs/msg/JointState",
-    "/initialpose": "geometry_msgs/msg/PoseWithCovarianceStamped",
-    "/goal_pose": "geometry_msgs/msg/PoseStamped",
-    "/clicked_point": "geometry_msgs/msg/PointStamped",
-}
 
 _TOPIC_KINDS = ("publishers", "subscriptions")
 

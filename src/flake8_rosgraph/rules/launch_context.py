@@ -8,6 +8,7 @@ at the root.
 """
 from __future__ import annotations
 
+from ..graph import names
 from ..graph.model import RosGraph, RosNode
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
@@ -34,3 +35,68 @@ def in_package(node: RosNode, packages: frozenset[str]) -> bool:
 def launched_in_namespace(node: RosNode) -> bool:
     """Whether a launch file starts this node copy in a namespace other than the root."""
     return node.launch is not None and bool((node.namespace or "/").strip("/"))
+
+
+def unseen_remap_targets(graph: RosGraph) -> frozenset[str]:
+    """The names a launch file remaps a node of unseen code onto (an installed package's
+    executable, a C++ one whose names the analysis reads in part): the launch file says that
+    node uses the name, in a role the analysis cannot see, so it may be the missing other end.
+
+    A relative target lands in the node's namespace; a private one (``~/x``) or one under an
+    unknown namespace is left out: its full name is not known.
+    """
+    out: set[str] = set()
+    for system in graph.systems:
+        analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
+        for launched in system.nodes:
+            if id(launched) in analysed:
+                continue
+            for remap in launched.remaps:
+                name = _landing(remap.target, launched.namespace)
+                if name is not None:
+                    out.add(name)
+    return frozenset(out)
+
+
+def _landing(target: str, namespace: str | None) -> str | None:
+    """Where a remap target lands for a node in ``namespace`` (``None``: not known statically)."""
+    if not target or target.startswith("~") or "$" in target or "{" in target:
+        return None
+    if target.startswith("/"):
+        return target
+    if namespace is None:
+        return None
+    return namespace.rstrip("/") + "/" + target
+
+
+def unseen_code_names(graph: RosGraph) -> frozenset[str]:
+    """The names nodes hand, with themselves, to a library the analysis cannot see into
+    (:attr:`~flake8_rosgraph.graph.model.RosNode.unseen_names`), expanded where each node
+    runs: in code as written, and as each launch file starts it."""
+    out: set[str] = set()
+    placed = [(node, node, []) for node in graph.nodes if node.launch is None]
+    placed += [(instance.node, instance.code,
+                [names.RemapRule(r.source, r.target) for r in instance.launched.remaps])
+               for system in graph.systems for instance in system.instances]
+    for node, code, rules in placed:
+        if node.name is None or node.namespace is None:
+            continue
+        for raw in code.unseen_names:
+            expanded, _ = names.expand_topic_name(raw, node.name, node.namespace)
+            if expanded is None:
+                continue
+            out.add(expanded)
+            rule = names.first_remap_match(expanded, rules, node.name, node.namespace)
+            if rule is not None:  # the launch file moves the library's end too
+                remapped, _ = names.expand_topic_name(rule.replacement, node.name, node.namespace)
+                if remapped is not None:
+                    out.add(remapped)
+    return frozenset(out)
+
+
+def under_any(name: str | None, roots: frozenset[str]) -> bool:
+    """Whether ``name`` is one of ``roots`` or lies under one (a library handed ``image_raw``
+    may derive ``image_raw/compressed``)."""
+    if name is None:
+        return False
+    return name in roots or any(name.startswith(root.rstrip("/") + "/") for root in roots)

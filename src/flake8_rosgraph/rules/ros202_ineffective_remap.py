@@ -26,6 +26,10 @@ def _judgeable(instance: Instance, remap: Remap) -> bool:
         return False
     if remap.source.startswith("__"):
         return False  # __node, __ns, __log_level … are not topic remaps
+    if any(remap.source == name or remap.source.startswith(name.rstrip("/") + "/")
+           for name in instance.code.unseen_names):
+        return False  # the node hands this name to a library the analysis cannot see into,
+        # which may also derive names under it (``image_raw/filter_state``)
     expanded, _ = names.expand_topic_name(remap.source, node.name, node.namespace)
     if expanded is None:
         return False  # ROS203 reports an invalid source
@@ -51,8 +55,14 @@ class IneffectiveRemap(Rule):
 
     ## Known problems
     Only nodes whose code is in the workspace and whose every name is known
-    are judged (a C++ node's names are not). A `SetRemap` is reported only
-    when it matches no name of any node it applies to. Remaps of the names
+    are judged (a C++ node's names are not), and a source the node's class
+    writes as an argument of a call that hands the node to an unmodelled
+    library (`hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)`)
+    is taken as used, with the names under it: that library makes the end,
+    and may derive more (`image_raw/filter_state`). A `SetRemap` is reported only
+    when it matches no name of any node it applies to; likewise a node's own
+    rule when its executable creates several nodes (rcl hands the process's
+    rules to each of them). Remaps of the names
     rcl uses implicitly (`/rosout`, `/parameter_events`, a node's built-in
     parameter, logger and lifecycle services) and special rules (`__ns`,
     `__node`) are not judged; other private names (`~/status`) are. The
@@ -85,11 +95,21 @@ class IneffectiveRemap(Rule):
     def _system(self, system: System) -> Iterator[Finding]:
         # A remap (by its position in a launched node's list) → the instances it applies to.
         scope_rules: dict[Remap, list[tuple[Instance, int]]] = {}
+        # rcl hands a process's remap rules to every node it creates: a rule of one launch
+        # action is effective when it matches a name of any of the executable's nodes.
+        hits: dict[int, set[int]] = {}
+        judged: dict[int, list[Instance]] = {}
         for instance in system.instances:
+            hits.setdefault(id(instance.launched), set()).update(instance.remap_hits)
+            judged.setdefault(id(instance.launched), []).append(instance)
+        for instance in system.instances:
+            # one finding per launch action, told on the node that uses the most names
+            first = max(judged[id(instance.launched)], key=lambda inst: len(inst.expanded)) is instance
             for index, remap in enumerate(instance.launched.remaps):
                 if remap.from_scope:
                     scope_rules.setdefault(remap, []).append((instance, index))
-                elif index not in instance.remap_hits and _judgeable(instance, remap):
+                elif first and index not in hits[id(instance.launched)] \
+                        and all(_judgeable(inst, remap) for inst in judged[id(instance.launched)]):
                     yield self._finding(remap, instance)
         for remap, uses in scope_rules.items():
             if any(index in inst.remap_hits for inst, index in uses):

@@ -74,6 +74,10 @@ class EndpointIndex:
     unresolved_types: dict[str, frozenset[Unresolved]] = field(default_factory=dict)
     #: The same, of production nodes only: a fixture's unknown cannot fill a production gap.
     unresolved_production_types: dict[str, frozenset[Unresolved]] = field(default_factory=dict)
+    #: Production ends of unknown name *and* type, by kind: ``(name suffix, node)``. Such an end
+    #: (a test harness or recorder whose topics come from a plan at run time) could be any
+    #: topic, so it fills only gaps near it (:func:`near`), never the whole workspace's.
+    untyped_unresolved: dict[str, tuple[tuple["str | None", RosNode], ...]] = field(default_factory=dict)
     #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
     _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
 
@@ -82,6 +86,7 @@ class EndpointIndex:
         by_name: dict[tuple[str, str], list[Endpoint]] = defaultdict(list)
         unresolved_types: dict[str, set[Unresolved]] = defaultdict(set)
         unresolved_production: dict[str, set[Unresolved]] = defaultdict(set)
+        untyped: dict[str, list[tuple[str | None, RosNode]]] = defaultdict(list)
         scopes: dict[int, str | None] = {}
         for node, entity in graph.entities():
             if entity.kind not in NAMED_KINDS:
@@ -91,13 +96,16 @@ class EndpointIndex:
             scope = scopes[id(node)]
             if entity.name is None:
                 unresolved_types[entity.kind].add((entity.type, entity.name_suffix))
-                if scope is None:
+                if scope is None and entity.type is None:
+                    untyped[entity.kind].append((entity.name_suffix, node))
+                elif scope is None:
                     unresolved_production[entity.kind].add((entity.type, entity.name_suffix))
             else:
                 by_name[(entity.kind, entity.name)].append(Endpoint(node, entity, scope))
         for endpoints in by_name.values():
             endpoints.sort(key=lambda ep: ep.sort_key)
-        return cls(dict(by_name), _frozen(unresolved_types), _frozen(unresolved_production))
+        return cls(dict(by_name), _frozen(unresolved_types), _frozen(unresolved_production),
+                   {kind: tuple(ends) for kind, ends in untyped.items()})
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         """All resolved endpoints of one kind, in source order."""
@@ -151,9 +159,13 @@ class EndpointIndex:
         out being ``endpoint``'s other end: an unknown stays local to the names it could be."""
         unresolved = self.unresolved_types if endpoint.scope is not None else self.unresolved_production_types
         own_type, own_name = endpoint.entity.type, endpoint.entity.name or ""
+        peer_kind = PEER_KIND[endpoint.entity.kind]
         return any((own_type is None or peer_type is None or peer_type == own_type)
                    and (suffix is None or own_name.endswith(suffix))
-                   for peer_type, suffix in unresolved.get(PEER_KIND[endpoint.entity.kind], ()))
+                   for peer_type, suffix in unresolved.get(peer_kind, ())) or (
+            endpoint.scope is None and any(
+                (suffix is None or own_name.endswith(suffix)) and near(node, endpoint.node)
+                for suffix, node in self.untyped_unresolved.get(peer_kind, ())))
 
     def wired_nodes(self, kind: str, exempt: ExemptNames) -> frozenset[int]:
         """``id()`` of every node with an endpoint of ``kind`` that reaches *another* node through a non-exempt name.
@@ -187,3 +199,23 @@ class EndpointIndex:
 
 def _frozen(types: dict[str, set[Unresolved]]) -> dict[str, frozenset[Unresolved]]:
     return {kind: frozenset(found) for kind, found in types.items()}
+
+
+def package_folder(path: str) -> str:
+    """The folder of the ROS package a source file most likely lies in, from the path alone:
+    the parent of an ament_python package's module folder of the same name
+    (``src/nav/nav/planner.py`` -> ``src/nav``), else the parent of the file's folder
+    (``ros/dance/scripts/head.py`` -> ``ros/dance``)."""
+    parts = path.split("/")[:-1]
+    for index in range(len(parts) - 1, 0, -1):
+        if parts[index] == parts[index - 1]:
+            return "/".join(parts[:index])
+    return "/".join(parts[:-1])
+
+
+def near(a: RosNode, b: RosNode) -> bool:
+    """Whether two nodes are close enough for an end of unknown name and type on one to stand
+    for the other's missing partner: one package, or started by one launch file."""
+    if package_folder(a.location.path) == package_folder(b.location.path):
+        return True
+    return a.launch is not None and b.launch is not None and a.launch.get("file") == b.launch.get("file")

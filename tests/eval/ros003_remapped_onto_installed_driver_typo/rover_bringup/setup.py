@@ -1,0 +1,18 @@
+from glob import glob
+
+from setuptools import setup
+
+package_name = 'rover_bringup'
+
+setup(
+    name=package_name,
+    version='0.1.0',
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+        ('share/' + package_name + '/launch', glob('launch/*.launch.py')),
+        ('share/' + package_name + '/config', glob('config/*.yaml')),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+)
