@@ -16,7 +16,6 @@ several types, which goes with which is unknown, and the type stays unknown.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
