@@ -142,7 +142,8 @@ class UsageBuilder:
                               self._signature(func, receiver is not None),
                               any(self._may_return_none(t) for t in tasks),
                               atom.fid, receiver)
-                out.setdefault((cb.registration, cb.function, cb.role, repr(receiver)), cb)
+                # by definition too: a name defined twice under a condition is two functions
+                out.setdefault((cb.registration, cb.function, cb.definition, cb.role, repr(receiver)), cb)
         return list(out.values())
 
     def _tasks(self, fid: int, receiver) -> list[tuple]:

@@ -8,6 +8,13 @@ from ..graph.usage import Callback, Signature
 from .base import Finding, Rule, RuleConfig
 
 
+def _fits(cb: Callback) -> bool:
+    """Whether ``cb`` may take what rclpy passes it (an unknown signature may)."""
+    sig = cb.signature
+    return sig is None or cb.passes is None or (cb.by_annotation and sig.annotated) \
+        or any(sig.accepts(n) for n in cb.passes)
+
+
 def _accepted(sig: Signature) -> str:
     """``sig`` in words: "takes 2 arguments", "takes 1 to 3 arguments", "takes at least 1 argument"."""
     if sig.required_keywords:
@@ -91,19 +98,28 @@ class CallbackSignature(Rule):
         if usage is None:
             return
         missing_return: dict[tuple, Callback] = {}
+        # A name defined twice under a condition (``if ROS_VERSION == 1: def on_params(self,
+        # config, level)`` / ``else: def on_params(self, params)``) is one function or the
+        # other: its registration is wrong only if every definition is, and it is one finding.
+        fitting = {(cb.registration, cb.role, cb.function) for cb in usage.callbacks if _fits(cb)}
+        unfit: dict[tuple, list[Callback]] = {}
         for cb in usage.callbacks:
             sig = cb.signature
             if sig is None or cb.passes is None or (cb.by_annotation and sig.annotated):
                 continue
             if not any(sig.accepts(n) for n in cb.passes):
-                given = " or ".join(map(str, cb.passes)) + " argument" + \
-                    ("" if cb.passes == (1,) else "s")
-                yield Finding(cb.registration, self.code,
-                              f"{cb.role} `{cb.function}` {_accepted(sig)}, but rclpy passes "
-                              f"{given}: TypeError when it is called",
-                              ((cb.definition, f"`{cb.function}` defined here"),))
+                if (cb.registration, cb.role, cb.function) not in fitting:
+                    unfit.setdefault((cb.registration, cb.role, cb.function), []).append(cb)
             elif cb.must_return and cb.may_return_none:
                 missing_return.setdefault((cb.definition, cb.must_return), cb)
+        for key in sorted(unfit):
+            definitions = sorted(unfit[key], key=lambda cb: cb.definition)
+            cb = definitions[0]
+            given = " or ".join(map(str, cb.passes or ())) + " argument" + ("" if cb.passes == (1,) else "s")
+            yield Finding(cb.registration, self.code,
+                          f"{cb.role} `{cb.function}` {_accepted(cb.signature)}, but rclpy passes "
+                          f"{given}: TypeError when it is called",
+                          tuple((d.definition, f"`{d.function}` defined here") for d in definitions))
         for (definition, what), cb in sorted(missing_return.items()):
             yield Finding(definition, self.code,
                           f"{cb.role} `{cb.function}` must return {what}, but returns None on "
