@@ -130,6 +130,7 @@ class _Explainer:
         for eff in analysis.all_effects():
             if eff.kind in CREATION_KINDS and not switched_off(eff):
                 self.effects.setdefault((eff.path, eff.line, eff.column), []).append(eff)
+        self.wrappers = _workspace_only_calls(analysis)
         self.graph_nodes: dict[tuple, list] = {}
         self.graph_entities: dict[tuple, list] = {}
         for node in graph.nodes:
@@ -156,6 +157,9 @@ class _Explainer:
             if found is None:
                 continue
             site = Site(module.path, call.lineno, module.column(call), found[0])
+            key = (site.path, site.line, site.column)
+            if key in self.wrappers and key not in self.effects:
+                continue  # the workspace's own ``create_*``: the library call inside it is the site
             yield self._explain(site, found[1], module, call, scope, unresolved)
 
     def _creation_call(self, call: ast.Call, klass: ast.ClassDef | None,
@@ -464,6 +468,18 @@ class _Explainer:
 
 
 # -- syntax helpers ------------------------------------------------------------------------
+def _workspace_only_calls(analysis: Analysis) -> frozenset[tuple[str, int, int]]:
+    """Places of calls the analysis resolved, on every run that reached them, to workspace
+    code only (``api.create_service(...)`` of a wrapper class the workspace defines, held in a
+    variable): not creation sites, whatever their method's name."""
+    callees: dict[tuple[str, int, int], set[str]] = {}
+    graph = analysis.call_graph()
+    for task in graph.tasks():
+        for call in graph.sites(task):
+            callees.setdefault((call.path, call.line, call.column), set()).add(call.callee[0])
+    return frozenset(key for key, kinds in callees.items() if kinds == {"task"})
+
+
 def _calls_with_scope(tree: ast.Module):
     """Every call with its innermost enclosing function (or lambda) and class definition."""
     stack: list[tuple[ast.AST, ast.AST | None, ast.ClassDef | None]] = [(tree, None, None)]
