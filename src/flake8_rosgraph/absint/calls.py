@@ -198,15 +198,44 @@ class CallSemantics:
         return atoms([obj])
 
     def construct(self, obj: Obj, args: "Args", node) -> None:
-        init = self.class_attr(self.mro(obj.cls), "__init__", obj)
-        if init is not None:
-            self.call(init, args, node)
+        fields = self.init_fields(obj.cls)
+        if fields is not None:
+            self._set_fields(obj, *fields, args)
+            post = self.class_attr(self.mro(obj.cls), "__post_init__", obj) if fields[1] else None
+            if post is not None:
+                self.call(post, Args([], {}, False), node)
+        else:
+            init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+            if init is not None:
+                self.call(init, args, node)
         for lib_cls in [c.qualname for c in self.mro(obj.cls) if isinstance(c, Extern)]:
             for name in self.lib.called_methods(lib_cls):
                 method = self.class_attr(self.mro(obj.cls), name, obj)
                 for atom in method or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+
+    def _set_fields(self, obj: Obj, fields: list, positional: bool, args: "Args") -> None:
+        """Write what a field-built ``__init__`` stores (see :mod:`.fieldclasses`): each field its
+        argument, by position when ``positional``, else by keyword; a field not given keeps
+        its default (a ``field(...)`` default is unknown); under ``*args``/``**kwargs`` every
+        field not named may be given, so it is unknown. Keyword-only classes whose library
+        ``__init__`` is not modelled only get the fields their keywords name."""
+        given = [f for f in fields if f.init]
+        pos = list(args.pos) if positional else []
+        for i, found in enumerate(given):
+            site = ("a", obj.site, found.name)
+            if i < len(pos):
+                self.an.write(site, pos[i])
+            elif found.name in args.kw:
+                self.an.write(site, args.kw[found.name])
+            elif args.star or (found.computed_default and positional):
+                self.an.write(site, TOP)
+            elif positional and found.has_default:
+                default = self.class_attr(self.mro(obj.cls), found.name, obj)
+                self.an.write(site, TOP if default is None else default)
+            elif positional:
+                self.an.write(site, TOP)  # a required field not passed: TypeError, or unseen
 
     def instantiate_entry(self, cid: int) -> None:
         """Analyse a class nothing instantiates, as if a library created it with unknown arguments."""
@@ -242,6 +271,9 @@ class CallSemantics:
         return added
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
+        fields = self.init_fields(obj.cls)
+        if fields is not None:  # built by unknown code: not with the fields' defaults
+            self._set_fields(obj, fields[0], fields[1], Args([], {}, True))
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
         given = self._framework_arguments(obj, cid)
         for atom in init or ():

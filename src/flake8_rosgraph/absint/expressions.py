@@ -219,6 +219,8 @@ class ExpressionSemantics:
             return out
         if isinstance(atom, Const) and isinstance(atom.value, (str, bytes, tuple)):
             return fold(lambda s, i: s[i], [atoms([atom]), index])
+        if isinstance(atom, ClassAtom) and self.is_generic_alias(atom):
+            return atoms([atom])
         return TOP
 
     def e_Starred(self, node: ast.Starred) -> Value:

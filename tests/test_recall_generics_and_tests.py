@@ -1,0 +1,512 @@
+"""Extraction mechanisms found on a third round of real repositories outside every test set
+(generic connector classes, package modules with a ``#!`` line, unittest test cases, wrapper
+classes named like rclpy's), each on a realistic multi-file workspace, with a near-identical
+twin where following the code must not invent a name or an entity."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from test_recall_mechanisms import entities, explained
+from test_workspace_discovery import PACKAGE_XML, write
+
+
+def _setup(name: str, scripts: str) -> str:
+    return f"""
+        from setuptools import find_packages, setup
+
+        setup(
+            name='{name}',
+            packages=find_packages(exclude=['test']),
+            entry_points={{'console_scripts': [{scripts}]}},
+        )
+    """
+
+
+# -- generic classes: ``Base[T]`` as a base class and ``Connector[Msg](...)`` -----------------------
+CONNECTOR_FILES = {
+    "agent_comm/package.xml": PACKAGE_XML.format(name="agent_comm", build="ament_python"),
+    "agent_comm/setup.py": _setup("agent_comm", "'agent = agent_comm.agent:main'"),
+    "agent_comm/agent_comm/__init__.py": "",
+    "agent_comm/agent_comm/base.py": """
+        from typing import Generic, TypeVar
+
+        T = TypeVar('T')
+
+
+        class BaseConnector(Generic[T]):
+            '''Transport-agnostic: sends and receives messages of type T.'''
+
+            def __init__(self):
+                self.sent = []
+    """,
+    "agent_comm/agent_comm/ros_connector.py": """
+        from typing import TypeVar
+
+        from rclpy.node import Node
+        from std_srvs.srv import Trigger
+
+        from agent_comm.base import BaseConnector
+
+        M = TypeVar('M')
+
+
+        class RosConnectorBase(BaseConnector[M]):
+            def __init__(self, node_name):
+                super().__init__()
+                self._node = Node(node_name)
+                self._node.create_service(Trigger, '~/reset', self.on_reset)
+
+            @property
+            def node(self):
+                return self._node
+
+            def on_reset(self, request, response):
+                self.sent.clear()
+                return response
+    """,
+    "agent_comm/agent_comm/connectors.py": """
+        from std_msgs.msg import String
+
+        from agent_comm.ros_connector import RosConnectorBase
+
+
+        class StringConnector(RosConnectorBase[String]):
+            pass
+    """,
+    "agent_comm/agent_comm/agent.py": """
+        import rclpy
+        from std_msgs.msg import String
+
+        from agent_comm.connectors import StringConnector
+        from agent_comm.ros_connector import RosConnectorBase
+
+
+        class Speaker:
+            def __init__(self, connector):
+                self.connector = connector
+                self.pub = self.connector.node.create_publisher(String, '/speech/say', 10)
+
+
+        def main():
+            rclpy.init()
+            speaker = Speaker(StringConnector('speaker'))
+            listener = RosConnectorBase[String]('listener')
+            listener.node.create_subscription(String, '/speech/heard', print, 10)
+            rclpy.spin(speaker.connector.node)
+    """,
+}
+
+
+def test_a_generic_base_class_and_a_subscripted_constructor_are_the_class(tmp_path: Path) -> None:
+    """``class StringConnector(RosConnectorBase[String])`` derives from ``RosConnectorBase``,
+    itself a ``BaseConnector[M]`` over ``Generic[T]``, and ``RosConnectorBase[String](…)``
+    builds one: typing's aliases stand for the class (rai's ROS2Connector: 6 sites never
+    reached and 13 on ``connector.node`` before)."""
+    got = entities(write(tmp_path, CONNECTOR_FILES))
+    assert got == {
+        "/listener": [("services", "/listener/reset"), ("subscriptions", "/speech/heard")],
+        "/speaker": [("publishers", "/speech/say"), ("services", "/speaker/reset")],
+    }
+
+
+def test_a_class_whose_subscript_runs_code_is_not_an_alias(tmp_path: Path) -> None:
+    """An ``Enum``'s or a metaclass's ``Cls[key]`` runs code of its own (``Topics['cmd']`` is a
+    member, ``Lookup['x']`` whatever ``__getitem__`` returns): no name comes from taking it
+    for the class."""
+    files = dict(CONNECTOR_FILES)
+    files["agent_comm/agent_comm/names.py"] = """
+        from enum import Enum
+
+
+        class Topics(Enum):
+            CMD = '/speech/cmd'
+
+
+        class Registry(type):
+            def __getitem__(cls, key):
+                return cls.table[key]
+
+
+        class Lookup(metaclass=Registry):
+            table = {}
+    """
+    files["agent_comm/agent_comm/agent.py"] = """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from agent_comm.names import Lookup, Topics
+
+
+        def main():
+            rclpy.init()
+            node = Node('speaker')
+            node.create_publisher(String, Topics['CMD'], 10)
+            node.create_publisher(String, Lookup['say'], 10)
+            rclpy.spin(node)
+    """
+    got = entities(write(tmp_path, files))
+    assert got["/speaker"] == [("publishers", "?"), ("publishers", "?")]
+
+
+# -- a package module with a ``#!`` line, named like its package ------------------------------------
+CAMERA_FILES = {
+    "ptz_camera/package.xml": PACKAGE_XML.format(name="ptz_camera", build="ament_python"),
+    "ptz_camera/setup.py": _setup("ptz_camera", "'ptz_camera_node = ptz_camera.ptz_camera_node:main'"),
+    "ptz_camera/ptz_camera/__init__.py": "",
+    "ptz_camera/ptz_camera/ptz.py": """
+        from std_msgs.msg import Float32
+
+
+        class Ptz:
+            '''Pan/tilt control, created by the camera node on itself.'''
+
+            def __init__(self, node):
+                self.node = node
+                self.cmd_sub = node.create_subscription(Float32, 'ptz/pan', self.on_pan, 1)
+                self.state_pub = node.create_publisher(Float32, 'ptz/state', 1)
+
+            def on_pan(self, msg):
+                self.state_pub.publish(msg)
+    """,
+    "ptz_camera/ptz_camera/ptz_camera.py": """
+        #!/usr/bin/env python3
+        from rclpy.node import Node
+        from sensor_msgs.msg import CompressedImage
+
+        from ptz_camera.ptz import Ptz
+
+
+        class PtzCamera(Node):
+            def __init__(self):
+                super().__init__('ptz_camera')
+                self.image_pub = self.create_publisher(CompressedImage, 'image/compressed', 1)
+                self.ptz = Ptz(self)
+    """,
+    "ptz_camera/ptz_camera/ptz_camera_node.py": """
+        #!/usr/bin/env python3
+        import rclpy
+
+        from ptz_camera.ptz_camera import PtzCamera
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(PtzCamera())
+    """,
+}
+
+
+def test_a_package_module_with_a_shebang_imports_its_package_by_name(tmp_path: Path) -> None:
+    """``ptz_camera/ptz_camera.py`` has a ``#!`` line but runs through the package (a console
+    script imports it): ``from ptz_camera.ptz import Ptz`` is the package's module, not an
+    attribute of the file itself (axis_camera: 6 sites never reached before)."""
+    root = write(tmp_path, CAMERA_FILES)
+    assert entities(root) == {"/ptz_camera": [
+        ("publishers", "/image/compressed"), ("publishers", "/ptz/state"),
+        ("subscriptions", "/ptz/pan")]}
+    assert all(status == "complete" for _, _, status in explained(root))
+
+
+def test_a_package_module_with_a_shebang_still_imports_its_neighbour(tmp_path: Path) -> None:
+    """The same file importing another name (``import ptz``): a ``#!`` file's own folder comes
+    first on ``sys.path``, so the module beside it is taken, as before."""
+    files = dict(CAMERA_FILES)
+    files["ptz_camera/ptz_camera/ptz_camera.py"] = CAMERA_FILES["ptz_camera/ptz_camera/ptz_camera.py"] \
+        .replace("from ptz_camera.ptz import Ptz", "from ptz import Ptz")
+    assert entities(write(tmp_path, files))["/ptz_camera"] == [
+        ("publishers", "/image/compressed"), ("publishers", "/ptz/state"),
+        ("subscriptions", "/ptz/pan")]
+
+
+# -- unittest test cases: the runner instantiates them ----------------------------------------------
+FILTER_FILES = {
+    "scan_filter/package.xml": PACKAGE_XML.format(name="scan_filter", build="ament_python"),
+    "scan_filter/setup.py": _setup("scan_filter", "'scan_filter = scan_filter.filter_node:main'"),
+    "scan_filter/scan_filter/__init__.py": "",
+    "scan_filter/scan_filter/filter_node.py": """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import LaserScan
+
+
+        class ScanFilter(Node):
+            def __init__(self):
+                super().__init__('scan_filter')
+                self.pub = self.create_publisher(LaserScan, 'scan_filtered', 10)
+                self.create_subscription(LaserScan, 'scan', self.pub.publish, 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(ScanFilter())
+    """,
+    "scan_filter/test/probes.py": """
+        import unittest
+
+        import rclpy
+        from sensor_msgs.msg import LaserScan
+        from std_srvs.srv import Empty
+
+
+        class ProbeTestBase(unittest.TestCase):
+            '''Shared by the filter's tests; each sets its probe's name.'''
+
+            probe_name = None
+
+            @classmethod
+            def setUpClass(cls):
+                rclpy.init()
+                cls.node = rclpy.create_node(cls.probe_name)
+
+            def setUp(self):
+                self.scan_pub = self.node.create_publisher(LaserScan, 'scan', 10)
+                self.received = []
+                self.node.create_subscription(LaserScan, 'scan_filtered', self.received.append, 10)
+
+            @classmethod
+            def tearDownClass(cls):
+                cls.node.destroy_node()
+                rclpy.shutdown()
+    """,
+    "scan_filter/test/test_filter.py": """
+        from std_srvs.srv import Empty
+
+        from probes import ProbeTestBase
+
+
+        class TestPassThrough(ProbeTestBase):
+            probe_name = 'pass_through_probe'
+
+            def test_scan_passes(self):
+                self.scan_pub.publish(self.make_scan())
+                self.assertTrue(self.received)
+
+            def make_scan(self):
+                from sensor_msgs.msg import LaserScan
+                return LaserScan()
+
+
+        class TestReset(ProbeTestBase):
+            probe_name = 'reset_probe'
+
+            def test_reset(self):
+                client = self.node.create_client(Empty, 'scan_filter/reset')
+                self.assertTrue(client.wait_for_service(timeout_sec=1.0))
+    """,
+}
+
+
+def test_unittest_cases_are_entry_points(tmp_path: Path) -> None:
+    """The test runner instantiates each leaf ``TestCase`` and runs ``setUpClass``, ``setUp``
+    and the ``test_*`` methods: the probes' nodes and ends are in the graph under the names
+    each subclass sets, and the shared base (never run on its own) invents no node named
+    ``None`` (launch tests of ros2_control and FlexBE: 19 sites never reached before)."""
+    root = write(tmp_path, FILTER_FILES)
+    got = entities(root, ("publishers", "subscriptions", "clients"))
+    assert got == {
+        "/pass_through_probe": [("publishers", "/scan"), ("subscriptions", "/scan_filtered")],
+        "/reset_probe": [("clients", "/scan_filter/reset"), ("publishers", "/scan"),
+                         ("subscriptions", "/scan_filtered")],
+        "/scan_filter": [("publishers", "/scan_filtered"), ("subscriptions", "/scan")],
+    }
+    assert all(status == "complete" for _, _, status in explained(root))
+
+
+def test_a_class_with_test_methods_but_no_test_case_base_is_not_run(tmp_path: Path) -> None:
+    """A helper with ``setUp``/``test_*``-like methods that is no ``TestCase`` (and that nothing
+    instantiates) is not run by any runner: no node of it appears."""
+    files = dict(FILTER_FILES)
+    files["scan_filter/test/probes.py"] = FILTER_FILES["scan_filter/test/probes.py"].replace(
+        "class ProbeTestBase(unittest.TestCase):", "class ProbeTestBase:")
+    got = entities(write(tmp_path, files), ("publishers", "subscriptions", "clients"))
+    assert list(got) == ["/scan_filter"]
+
+
+# -- the workspace's own methods named like rclpy's ---------------------------------------------------
+API_FILES = {
+    "speech/package.xml": PACKAGE_XML.format(name="speech", build="ament_python"),
+    "speech/setup.py": _setup("speech", "'speech = speech.app:main'"),
+    "speech/speech/__init__.py": "",
+    "speech/speech/topic_api.py": """
+        from std_msgs.msg import String
+
+
+        class TopicAPI:
+            '''Publishes strings by topic name, one publisher per topic.'''
+
+            def __init__(self, node):
+                self.node = node
+                self.publishers = {}
+
+            def create_publisher(self, topic):
+                self.publishers[topic] = self.node.create_publisher(String, topic, 10)
+                return self.publishers[topic]
+    """,
+    "speech/speech/app.py": """
+        import rclpy
+        from rclpy.node import Node
+
+        from speech.topic_api import TopicAPI
+
+
+        def main():
+            rclpy.init()
+            node = Node('speech')
+            api = TopicAPI(node)
+            api.create_publisher('/speech/say')
+            rclpy.spin(node)
+    """,
+}
+
+
+def test_a_wrapper_method_named_like_rclpys_is_no_creation_site(tmp_path: Path) -> None:
+    """``api.create_publisher('/speech/say')`` calls the workspace's ``TopicAPI`` method: the
+    site is the rclpy call inside it, not the call of the wrapper (which --explain used to
+    list as "not in the graph")."""
+    root = write(tmp_path, API_FILES)
+    assert entities(root) == {"/speech": [("publishers", "/speech/say")]}
+    assert explained(root) == [("speech/speech/app.py", 9, "complete"),
+                               ("speech/speech/topic_api.py", 12, "complete")]
+
+
+def test_a_create_call_on_an_unknown_object_stays_a_site(tmp_path: Path) -> None:
+    """The same call on an object the analysis does not know (here from an unresolved import)
+    may be rclpy's: it stays listed, as not in the graph."""
+    files = dict(API_FILES)
+    files["speech/speech/app.py"] = API_FILES["speech/speech/app.py"].replace(
+        "from speech.topic_api import TopicAPI", "from speech_vendor import TopicAPI")
+    assert ("speech/speech/app.py", 11, "missing") in explained(write(tmp_path, files))
+
+
+# -- classes whose __init__ is built from their fields --------------------------------------------
+LIDAR_FILES = {
+    "lidar_bringup/package.xml": PACKAGE_XML.format(name="lidar_bringup", build="ament_python"),
+    "lidar_bringup/setup.py": _setup("lidar_bringup", "'lidars = lidar_bringup.lidars:main'"),
+    "lidar_bringup/lidar_bringup/__init__.py": "",
+    "lidar_bringup/lidar_bringup/config.py": """
+        from dataclasses import dataclass, field
+        from typing import ClassVar
+
+
+        @dataclass
+        class LidarConfig:
+            topic: str = 'scan'
+            frame_id: str = 'laser'
+            MAX_RANGE: ClassVar[float] = 30.0
+
+
+        @dataclass(frozen=True)
+        class FilteredLidarConfig(LidarConfig):
+            filtered_topic: str = 'scan_filtered'
+            masks: list = field(default_factory=list)
+    """,
+    "lidar_bringup/lidar_bringup/lidars.py": """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import LaserScan
+
+        from lidar_bringup.config import FilteredLidarConfig, LidarConfig
+
+
+        class LidarHub(Node):
+            def __init__(self, configs, filtered):
+                super().__init__('lidar_hub')
+                for config in configs:
+                    self.create_subscription(LaserScan, config.topic, self.on_scan, 10)
+                self.create_publisher(LaserScan, filtered.filtered_topic, 10)
+
+            def on_scan(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            configs = [LidarConfig(topic='front/scan'), LidarConfig('rear/scan', 'rear_laser')]
+            rclpy.spin(LidarHub(configs, FilteredLidarConfig('top/scan', filtered_topic='top/clean')))
+    """,
+}
+
+
+def test_a_dataclass_instance_has_the_fields_it_was_built_with(tmp_path: Path) -> None:
+    """``LidarConfig(topic='front/scan')`` and ``LidarConfig('rear/scan', …)`` set ``topic`` on
+    the instance, by keyword and by position, base fields first for a dataclass subclass: the
+    class-level ``'scan'`` is only the default (before, every subscription was named ``/scan``,
+    a confident wrong name)."""
+    assert entities(write(tmp_path, LIDAR_FILES)) == {"/lidar_hub": [
+        ("publishers", "/top/clean"),
+        ("subscriptions", "/front/scan"), ("subscriptions", "/rear/scan")]}
+
+
+def test_a_field_left_out_keeps_its_default_and_a_plain_class_is_unchanged(tmp_path: Path) -> None:
+    """``LidarConfig()`` keeps ``'scan'``; a class with its own ``__init__`` that never sets
+    ``topic`` still reads its class attribute; a ``**kwargs`` call leaves every field it
+    may set unknown, never the default."""
+    files = dict(LIDAR_FILES)
+    files["lidar_bringup/lidar_bringup/lidars.py"] = LIDAR_FILES["lidar_bringup/lidar_bringup/lidars.py"] \
+        .replace("configs = [LidarConfig(topic='front/scan'), LidarConfig('rear/scan', 'rear_laser')]",
+                 "configs = [LidarConfig(), Legacy('rear/scan'), LidarConfig(**load())]") \
+        .replace("from lidar_bringup.config import FilteredLidarConfig, LidarConfig",
+                 "from lidar_bringup.config import FilteredLidarConfig, LidarConfig\n"
+                 "        from lidar_bringup.loader import load\n\n\n"
+                 "        class Legacy:\n"
+                 "            topic: str = 'legacy/scan'\n\n"
+                 "            def __init__(self, frame_id):\n"
+                 "                self.frame_id = frame_id")
+    files["lidar_bringup/lidar_bringup/loader.py"] = """
+        import yaml
+
+
+        def load():
+            with open('/etc/lidars.yaml') as f:
+                return yaml.safe_load(f)
+    """
+    assert entities(write(tmp_path, files)) == {"/lidar_hub": [
+        ("publishers", "/top/clean"), ("subscriptions", "/legacy/scan"),
+        ("subscriptions", "/scan"), ("subscriptions", "?")]}
+
+
+TOOL_FILES = {
+    "arm_tools/package.xml": PACKAGE_XML.format(name="arm_tools", build="ament_python"),
+    "arm_tools/setup.py": _setup("arm_tools", "'arm_agent = arm_tools.agent:main'"),
+    "arm_tools/arm_tools/__init__.py": "",
+    "arm_tools/arm_tools/tools.py": """
+        from agent_framework.tools import BaseTool
+        from std_srvs.srv import Trigger
+
+
+        class RosTool(BaseTool):
+            '''A tool of the agent framework (a pydantic model): fields by keyword.'''
+
+            node: object
+            service_name: str = 'arm/home'
+
+            def run(self):
+                client = self.node.create_client(Trigger, self.service_name)
+                return client.call_async(Trigger.Request())
+    """,
+    "arm_tools/arm_tools/agent.py": """
+        import rclpy
+        from rclpy.node import Node
+
+        from arm_tools.tools import RosTool
+
+
+        def main():
+            rclpy.init()
+            node = Node('arm_agent')
+            tools = [RosTool(node=node), RosTool(node=node, service_name='gripper/open')]
+            for tool in tools:
+                tool.run()
+            rclpy.spin(node)
+    """,
+}
+
+
+def test_keywords_naming_fields_of_a_framework_model_set_them(tmp_path: Path) -> None:
+    """A class over a library base no stub models (a pydantic model behind an agent
+    framework's ``BaseTool``) called with keywords that name its annotated fields has them
+    set: ``tool.node`` is the node, and each tool's service is its own (rai's tools: the
+    connector's node was unknown before)."""
+    assert entities(write(tmp_path, TOOL_FILES), ("clients",)) == {"/arm_agent": [
+        ("clients", "/arm/home"), ("clients", "/gripper/open")]}
