@@ -34,7 +34,10 @@ class ObjectSemantics:
         out = BOTTOM
         for atom in value:
             out = out.join(self._attr_of(atom, attr))
-            if out.is_top:
+            if out.is_top and out.is_saturated:
+                # Only the saturated ⊤ absorbs what the other atoms give: a ⊤ that keeps
+                # known names still takes theirs (stopping there made the result depend on
+                # the set's iteration order, which varies from run to run).
                 return out
         return out
 
