@@ -4,6 +4,9 @@ classes named like rclpy's), each on a realistic multi-file workspace, with a ne
 twin where following the code must not invent a name or an entity."""
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 from test_recall_mechanisms import entities, explained
@@ -510,3 +513,124 @@ def test_keywords_naming_fields_of_a_framework_model_set_them(tmp_path: Path) ->
     connector's node was unknown before)."""
     assert entities(write(tmp_path, TOOL_FILES), ("clients",)) == {"/arm_agent": [
         ("clients", "/arm/home"), ("clients", "/gripper/open")]}
+
+
+# -- callable objects and classes with their own __new__ -------------------------------------------
+RELAY_FILES = {
+    "topic_relay/package.xml": PACKAGE_XML.format(name="topic_relay", build="ament_python"),
+    "topic_relay/setup.py": _setup("topic_relay", "'relay = topic_relay.relay_node:main'"),
+    "topic_relay/topic_relay/__init__.py": "",
+    "topic_relay/topic_relay/functors.py": """
+        from std_msgs.msg import String
+
+
+        class Forward:
+            '''Republishes what it receives; the publisher is made on the first message.'''
+
+            def __init__(self, node, out_topic):
+                self.node = node
+                self.out_topic = out_topic
+                self.pub = None
+
+            def __call__(self, msg):
+                if self.pub is None:
+                    self.pub = self.node.create_publisher(String, self.out_topic, 10)
+                self.pub.publish(msg)
+    """,
+    "topic_relay/topic_relay/clients.py": """
+        from std_srvs.srv import Trigger
+
+
+        class SharedClient:
+            '''One client per service name for the whole process.'''
+
+            _clients = {}
+
+            def __new__(cls, node, service_name):
+                if service_name not in cls._clients:
+                    instance = super().__new__(cls)
+                    instance.client = node.create_client(Trigger, service_name)
+                    cls._clients[service_name] = instance
+                return cls._clients[service_name]
+
+            def call(self):
+                return self.client.call_async(Trigger.Request())
+    """,
+    "topic_relay/topic_relay/relay_node.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from topic_relay.clients import SharedClient
+        from topic_relay.functors import Forward
+
+        ROUTES = [('radio/in', 'radio/out'), ('wifi/in', 'wifi/out')]
+
+
+        class RelayNode(Node):
+            def __init__(self):
+                super().__init__('relay')
+                for source, target in ROUTES:
+                    self.create_subscription(String, source, Forward(self, target), 10)
+                self.reset = SharedClient(self, 'relay/reset')
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(RelayNode())
+    """,
+}
+
+
+def test_callable_objects_run_as_callbacks_and_new_builds_the_instance(tmp_path: Path) -> None:
+    """A ``Forward(self, target)`` instance handed over as the callback runs its ``__call__``
+    (its publishers are in the graph), and ``SharedClient(self, …)`` runs the class's
+    ``__new__``, whose ``super().__new__(cls)`` makes the instance (ros2_control's
+    SingletonServiceCaller: never reached before)."""
+    assert entities(write(tmp_path, RELAY_FILES), ("publishers", "subscriptions", "clients")) == {
+        "/relay": [("clients", "/relay/reset"),
+                   ("publishers", "/radio/out"), ("publishers", "/wifi/out"),
+                   ("subscriptions", "/radio/in"), ("subscriptions", "/wifi/in")]}
+
+
+def test_init_does_not_run_on_what_new_returns_of_another_class(tmp_path: Path) -> None:
+    """Python runs ``__init__`` only on an instance of the class: a ``__new__`` returning
+    the client itself skips it, and an object without ``__call__`` handed over as a
+    callback runs nothing."""
+    files = dict(RELAY_FILES)
+    files["topic_relay/topic_relay/clients.py"] = """
+        from std_msgs.msg import String
+        from std_srvs.srv import Trigger
+
+
+        class SharedClient:
+            def __new__(cls, node, service_name):
+                return node.create_client(Trigger, service_name)
+
+            def __init__(self, node, service_name):
+                node.create_publisher(String, 'never_made', 1)
+    """
+    files["topic_relay/topic_relay/functors.py"] = RELAY_FILES["topic_relay/topic_relay/functors.py"] \
+        .replace("def __call__(self, msg):", "def _forward(self, msg):")
+    assert entities(write(tmp_path, files), ("publishers", "subscriptions", "clients")) == {
+        "/relay": [("clients", "/relay/reset"),
+                   ("subscriptions", "/radio/in"), ("subscriptions", "/wifi/in")]}
+
+
+def test_an_attribute_of_objects_some_unknown_is_the_same_on_every_run(tmp_path: Path) -> None:
+    """``config.topic`` over configs of which one is built from unknown keywords: the known
+    names are kept beside the unknown one whatever order the set of objects is walked in
+    (it follows string hashing, which changes between runs)."""
+    files = dict(LIDAR_FILES)
+    files["lidar_bringup/lidar_bringup/lidars.py"] = LIDAR_FILES["lidar_bringup/lidar_bringup/lidars.py"] \
+        .replace("configs = [LidarConfig(topic='front/scan'), LidarConfig('rear/scan', 'rear_laser')]",
+                 "configs = [LidarConfig(), LidarConfig('rear/scan'), LidarConfig(**dict(os.environ))]") \
+        .replace("import rclpy", "import os\n\n        import rclpy")
+    root = write(tmp_path / "ws", files)
+    outputs = set()
+    for seed in ("1", "2", "3", "4"):
+        env = {**os.environ, "PYTHONHASHSEED": seed, "ROSGRAPH_CACHE_DIR": str(tmp_path / f"cache{seed}")}
+        outputs.add(subprocess.run([sys.executable, "-m", "flake8_rosgraph", "graph", str(root)],
+                                   env=env, capture_output=True, check=True).stdout)
+    assert len(outputs) == 1
+    assert b'"/rear/scan"' in outputs.pop()

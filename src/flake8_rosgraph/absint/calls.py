@@ -26,6 +26,10 @@ from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom
                      atoms, const, from_input, join_all, soften)
 
 
+#: ``object.__new__``: what a class's own ``__new__`` calls to make the instance.
+OBJECT_NEW = "builtins.object.__new__"
+
+
 class CallSemantics:
     """Call semantics, mixed into :class:`~.interpreter.Interpreter`."""
 
@@ -62,7 +66,7 @@ class CallSemantics:
         """Callables passed to unknown code may be called by it: analyse them as entries."""
         for value in list(args.pos) + list(args.kw.values()):
             for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod, Partial)):
+                if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
                     self.schedule_callback(atom)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
@@ -78,7 +82,17 @@ class CallSemantics:
             return self.call_bound_extern(atom, args, node)
         if isinstance(atom, Partial):
             return self._call_atom(atom.func, _applied(atom, args), node)
+        method = self._callable_object(atom)
+        if method is not None:
+            return self.call(method, args, node)
         return TOP
+
+    def _callable_object(self, atom: Atom) -> Value | None:
+        """``__call__`` bound to ``atom`` when it is an instance of a workspace class that
+        defines one (a functor handed over as a callback, called like a function)."""
+        if not isinstance(atom, Obj) or not isinstance(atom.cls, ClassAtom):
+            return None
+        return self.class_attr(self.mro(atom.cls), "__call__", atom)
 
     # -- user code ----------------------------------------------------------------------------
     def param_names(self, func: Function) -> list[str]:
@@ -181,6 +195,12 @@ class CallSemantics:
         while isinstance(atom, Partial):
             bound = _applied(atom, bound)
             atom = atom.func
+        method = self._callable_object(atom)
+        if method is not None:
+            for called in method:
+                self.schedule_callback(called if not bound.pos and not bound.kw else
+                                       Partial(called, tuple(bound.pos), tuple(bound.kw.items()), bound.star))
+            return
         if not isinstance(atom, (FuncAtom, BoundMethod)):
             return
         receiver = atom.receiver if isinstance(atom, BoundMethod) else None
@@ -191,11 +211,29 @@ class CallSemantics:
         self.an.schedule(self.an.function_task(atom.fid, ctx))
 
     def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
+        new = self.class_attr(self.mro(cls), "__new__", None)
+        if new is not None and any(isinstance(a, FuncAtom) for a in new):
+            return self._instantiate_through_new(cls, new, args, node)
+        return atoms([self.allocate(cls, node, args)])
+
+    def allocate(self, cls: ClassAtom, node, args: "Args | None" = None) -> Obj:
+        """A new instance of ``cls`` made at ``node``; built by its ``__init__`` when ``args``."""
         obj = Obj(self._site(node), cls)
         self.an.allocated.add(cls.cid)
         self.an.objects.setdefault(cls.cid, set()).add(obj)
-        self.construct(obj, args, node)
-        return atoms([obj])
+        if args is not None:
+            self.construct(obj, args, node)
+        return obj
+
+    def _instantiate_through_new(self, cls: ClassAtom, new: Value, args: "Args", node) -> Value:
+        """``Cls(...)`` of a class that defines ``__new__`` (a singleton, a cache of
+        instances): Python calls ``__new__(Cls, ...)`` and then ``__init__`` on what it
+        returns when that is an instance of the class; anything else is the result as is."""
+        result = self.call(new, Args([atoms([cls]), *args.pos], args.kw, args.star), node)
+        for atom in result:
+            if isinstance(atom, Obj) and isinstance(atom.cls, ClassAtom) and cls in self.mro(atom.cls):
+                self.construct(atom, args, node)
+        return result
 
     def construct(self, obj: Obj, args: "Args", node) -> None:
         fields = self.init_fields(obj.cls)
@@ -343,6 +381,11 @@ class CallSemantics:
 
     # -- library code ---------------------------------------------------------------------------
     def call_extern(self, qualname: str, args: "Args", node) -> Value:
+        if qualname == OBJECT_NEW:
+            # ``super().__new__(cls)`` in a ``__new__``: a new, not yet initialised instance.
+            classes = args.pos[0] if args.pos else TOP
+            made = [self.allocate(a, node) for a in classes if isinstance(a, ClassAtom)]
+            return atoms(made) if made and not classes.is_top else TOP
         if qualname.startswith("builtins."):
             return self.call_builtin(qualname[len("builtins."):], args, node)
         owner, _, method = qualname.rpartition(".")

@@ -12,7 +12,7 @@ import sys
 from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
-from .calls import Args
+from .calls import OBJECT_NEW, Args
 from .fieldclasses import FIELD_BASES, Field, decorated_fields, own_fields
 
 #: The attributes that name a class.
@@ -87,6 +87,8 @@ class ObjectSemantics:
             if here in order:
                 order = order[order.index(here) + 1:]
             found = self.class_attr(order, attr, atom.receiver)
+            if found is None and attr == "__new__":
+                return atoms([Extern(OBJECT_NEW)])
             return TOP if found is None else found
         if isinstance(atom, ModuleAtom):
             return self.import_member(atom.name, attr)
