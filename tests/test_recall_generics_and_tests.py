@@ -9,6 +9,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+from flake8_rosgraph.analysis import build_graph
+from flake8_rosgraph.launch.api import judged_graph
+
 from test_recall_mechanisms import entities, explained
 from test_workspace_discovery import PACKAGE_XML, write
 
@@ -634,3 +637,100 @@ def test_an_attribute_of_objects_some_unknown_is_the_same_on_every_run(tmp_path:
                                    env=env, capture_output=True, check=True).stdout)
     assert len(outputs) == 1
     assert b'"/rear/scan"' in outputs.pop()
+
+
+# -- str() of a parameter's value, ros2cli's NodeStrategy.direct_node ---------------------------------
+PLAYER_FILES = {
+    "archive_player/package.xml": PACKAGE_XML.format(name="archive_player", build="ament_python"),
+    "archive_player/setup.py": _setup("archive_player", "'player = archive_player.player:main'"),
+    "archive_player/archive_player/__init__.py": "",
+    "archive_player/archive_player/player.py": """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import Image
+
+
+        class Player(Node):
+            def __init__(self):
+                super().__init__('player')
+                self.declare_parameter('image_topic')
+                try:
+                    self.image_topic = str(self.get_parameter('image_topic').value)
+                except Exception:
+                    self.get_logger().error('image_topic is not set')
+                self.image_pub = self.create_publisher(Image, self.image_topic, 10)
+                self.create_publisher(Image, str(self.get_parameter('image_topic').value) + '/raw', 10)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Player())
+    """,
+    "archive_player/launch/play.launch.py": """
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            return LaunchDescription([
+                Node(package='archive_player', executable='player',
+                     parameters=[{'image_topic': '/sim_camera/color_image'}]),
+            ])
+    """,
+}
+
+
+def test_str_of_a_text_parameter_is_still_that_parameter(tmp_path: Path) -> None:
+    """``str(self.get_parameter('image_topic').value)`` is the parameter's text: the entity is
+    named by the parameter (a launch file that sets it names the topic), not "a value the
+    analysis does not know" (industrial_reconstruction: 6 sites), and text joined to it is
+    rebuilt from the launch file's value too."""
+    graph = build_graph(write(tmp_path, PLAYER_FILES))
+    player = next(n for n in graph.nodes if n.fqn == "/player")
+    assert sorted(((e.name, e.from_parameter) for e in player.entities if e.kind == "publishers"),
+                  key=repr) == [(None, "image_topic"), (None, None)]
+    system = next(s for s in graph.systems if s.launch_file.endswith("play.launch.py"))
+    launched = next(n for n in judged_graph(graph, [system]).nodes if n.fqn == "/player")
+    assert {"/sim_camera/color_image", "/sim_camera/color_image/raw"} <= {e.name for e in launched.entities}
+
+
+CLI_FILES = {
+    "ros2hw/package.xml": PACKAGE_XML.format(name="ros2hw", build="ament_python"),
+    "ros2hw/setup.py": """
+        from setuptools import find_packages, setup
+
+        setup(
+            name='ros2hw',
+            packages=find_packages(),
+            entry_points={
+                'ros2cli.command': ['hw = ros2hw.command.hw:HwCommand'],
+                'ros2hw.verb': ['status = ros2hw.verb.status:StatusVerb'],
+            },
+        )
+    """,
+    "ros2hw/ros2hw/__init__.py": "",
+    "ros2hw/ros2hw/verb/__init__.py": "",
+    "ros2hw/ros2hw/verb/status.py": """
+        from diagnostic_msgs.msg import DiagnosticArray
+        import rclpy
+        from ros2cli.node.strategy import NodeStrategy
+        from ros2cli.verb import VerbExtension
+
+
+        class StatusVerb(VerbExtension):
+            '''Print the hardware status.'''
+
+            def main(self, *, args):
+                with NodeStrategy(args).direct_node as node:
+                    node.create_subscription(DiagnosticArray, '/hardware/status', print, 10)
+                    rclpy.spin_once(node)
+    """,
+}
+
+
+def test_the_direct_node_of_a_node_strategy_is_a_node(tmp_path: Path) -> None:
+    """``with NodeStrategy(args).direct_node as node:`` in a ros2cli verb subscribes on the
+    strategy's DirectNode (ros2controlcli's view_hardware_status: not in the graph before)."""
+    root = write(tmp_path, CLI_FILES)
+    assert [e for node in entities(root).values() for e in node] == [
+        ("subscriptions", "/hardware/status")]

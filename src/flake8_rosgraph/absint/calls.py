@@ -636,6 +636,9 @@ class CallSemantics:
     # -- builtins ---------------------------------------------------------------------------
     def call_builtin(self, name: str, args: "Args", node) -> Value:
         pos = args.pos
+        if name == "str" and len(pos) == 1 and not args.kw and not args.star \
+                and pos[0].origin is not None and all(isinstance(c, str) for c in pos[0].consts() or ()):
+            return pos[0]  # ``str()`` of a text setting is the setting, still named by its origin
         if name in PURE_BUILTINS and not args.kw and not args.star:
             if name == "str" and not pos:
                 return const("")
