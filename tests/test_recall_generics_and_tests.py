@@ -12,7 +12,7 @@ from pathlib import Path
 from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.launch.api import judged_graph
 
-from test_recall_mechanisms import entities, explained
+from test_recall_mechanisms import entities, explained, findings
 from test_workspace_discovery import PACKAGE_XML, write
 
 
@@ -734,3 +734,92 @@ def test_the_direct_node_of_a_node_strategy_is_a_node(tmp_path: Path) -> None:
     root = write(tmp_path, CLI_FILES)
     assert [e for node in entities(root).values() for e in node] == [
         ("subscriptions", "/hardware/status")]
+
+
+# -- names read from a list parameter ------------------------------------------------------------------
+EXECUTOR_FILES = {
+    "arm_bringup/package.xml": PACKAGE_XML.format(name="arm_bringup", build="ament_python"),
+    "arm_bringup/setup.py": _setup("arm_bringup", "'executor = arm_bringup.executor:main', "
+                                                   "'cameras = arm_bringup.executor:cameras'"),
+    "arm_bringup/arm_bringup/__init__.py": "",
+    "arm_bringup/arm_bringup/executor.py": """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import JointState
+
+        SENSORS = ['wrist_camera', 'base_camera']
+
+
+        class StepExecutor(Node):
+            def __init__(self):
+                super().__init__('step_executor')
+                self.declare_parameter('step_names', [''])
+                self.declare_parameter('state_topics', ['joint_states'])
+                steps = self.get_parameter('step_names').get_parameter_value().string_array_value
+                for step in steps:
+                    self.declare_parameter(step, [0.0] * 6)
+                for topic in self.get_parameter('state_topics').value:
+                    self.create_subscription(JointState, topic, self.on_state, 10)
+
+            def on_state(self, msg):
+                pass
+
+
+        class CameraSwitch(Node):
+            def __init__(self):
+                super().__init__('camera_switch')
+                for sensor in SENSORS:
+                    self.declare_parameter(sensor + '.enabled', True)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(StepExecutor())
+
+
+        def cameras():
+            rclpy.init()
+            rclpy.spin(CameraSwitch())
+    """,
+    "arm_bringup/config/steps.yaml": """
+        step_executor:
+          ros__parameters:
+            step_names: ['home', 'grasp']
+            home: [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+            grasp: [0.1, 0.2, 0.3, 0.0, 0.0, 0.0]
+        camera_switch:
+          ros__parameters:
+            wrist_camera.enabled: false
+            base_camera.enable: true
+    """,
+    "arm_bringup/launch/arm.launch.py": """
+        import os
+
+        from ament_index_python.packages import get_package_share_directory
+        from launch import LaunchDescription
+        from launch_ros.actions import Node
+
+
+        def generate_launch_description():
+            config = os.path.join(get_package_share_directory('arm_bringup'), 'config', 'steps.yaml')
+            return LaunchDescription([
+                Node(package='arm_bringup', executable='executor', name='step_executor',
+                     parameters=[config]),
+                Node(package='arm_bringup', executable='cameras', name='camera_switch',
+                     parameters=[config]),
+            ])
+    """,
+}
+
+
+def test_names_from_a_list_parameter_are_its_default_and_unknown_others(tmp_path: Path) -> None:
+    """``for step in <the 'step_names' parameter>: declare_parameter(step, …)``: the list comes
+    from outside, so the steps a parameter file sets (``home``, ``grasp``) may be declared and
+    are no unknown parameters (open_manipulator: 13 false ROS204); a subscription per listed
+    topic keeps the default's topic and says the list may hold others. A constant list in
+    code still decides its names: another node's misspelt ``base_camera.enable`` is reported."""
+    root = write(tmp_path, EXECUTOR_FILES)
+    assert entities(root) == {"/camera_switch": [],
+                              "/step_executor": [("subscriptions", "/joint_states"),
+                                                 ("subscriptions", "?")]}
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS204"])] == [("ROS204", 9)]
