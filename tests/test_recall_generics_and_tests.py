@@ -823,3 +823,36 @@ def test_names_from_a_list_parameter_are_its_default_and_unknown_others(tmp_path
                               "/step_executor": [("subscriptions", "/joint_states"),
                                                  ("subscriptions", "?")]}
     assert [(code, line) for code, _, line, _ in findings(root, ["ROS204"])] == [("ROS204", 9)]
+
+
+def test_an_xml_parameter_value_with_substitutions_is_what_launch_makes_of_it(tmp_path: Path) -> None:
+    """``<param name="image_topic" value="$(var image_topic)"/>`` in an XML launch file gets the
+    argument's value (an including file's, or its default): the topic is named by it. An
+    argument with no value anywhere leaves the name unknown, never the text ``$(var …)``
+    (industrial_reconstruction: 6 false ROS006 on ``'$(var depth_image_topic)'``)."""
+    files = {k: v for k, v in PLAYER_FILES.items() if not k.endswith(".launch.py")}
+    files["archive_player/launch/player.launch.xml"] = """
+        <launch>
+          <arg name="image_topic"/>
+          <node pkg="archive_player" exec="player" name="player">
+            <param name="image_topic" value="$(var image_topic)"/>
+          </node>
+        </launch>
+    """
+    files["archive_player/launch/sim.launch.xml"] = """
+        <launch>
+          <arg name="image_topic" default="/sim_camera/color_image"/>
+          <include file="$(find-pkg-share archive_player)/launch/player.launch.xml">
+            <arg name="image_topic" value="$(var image_topic)"/>
+          </include>
+        </launch>
+    """
+    graph = build_graph(write(tmp_path, files))
+    named_in = {}
+    for system in graph.systems:
+        launched = next(n for n in judged_graph(graph, [system]).nodes if n.fqn == "/player")
+        named_in[system.launch_file.rpartition("/")[2]] = sorted(
+            (e.name for e in launched.entities if e.kind == "publishers"), key=repr)
+    assert named_in == {"player.launch.xml": [None, None],
+                        "sim.launch.xml": ["/sim_camera/color_image", "/sim_camera/color_image/raw"]}
+    assert findings(tmp_path, ["ROS006"]) == []
