@@ -856,3 +856,91 @@ def test_an_xml_parameter_value_with_substitutions_is_what_launch_makes_of_it(tm
     assert named_in == {"player.launch.xml": [None, None],
                         "sim.launch.xml": ["/sim_camera/color_image", "/sim_camera/color_image/raw"]}
     assert findings(tmp_path, ["ROS006"]) == []
+
+
+# -- pytest test classes ------------------------------------------------------------------------------
+def _gc_package(name: str, msg: str) -> dict[str, str]:
+    return {
+        f"{name}/package.xml": PACKAGE_XML.format(name=name, build="ament_python"),
+        f"{name}/setup.py": _setup(name, f"'{name} = {name}.bridge:main'"),
+        f"{name}/{name}/__init__.py": "",
+        f"{name}/{name}/bridge.py": f"""
+            import rclpy
+            from rclpy.node import Node
+            from gc_interfaces.msg import {msg}
+
+
+            class Bridge(Node):
+                def __init__(self):
+                    super().__init__('gc_bridge')
+                    self.pub = self.create_publisher({msg}, 'gc/data', 10)
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(Bridge())
+        """,
+    }
+
+
+GC_FILES = {
+    **_gc_package("gc_bridge", "RCGCD15"),
+    **_gc_package("gc_bridge_2022", "RCGCD14"),
+    "gc_bridge/test/test_bridge.py": """
+        import rclpy
+        from rclpy.node import Node
+        from gc_interfaces.msg import RCGCD15
+
+        from gc_bridge.bridge import Bridge
+
+
+        class TestBridge:
+            received = []
+
+            @classmethod
+            def setup_class(cls):
+                rclpy.init()
+
+            @staticmethod
+            def test_receiving():
+                probe = Node('gc_probe')
+                probe.create_subscription(RCGCD15, 'gc/data', TestBridge.received.append, 10)
+                bridge = Bridge()
+                rclpy.spin_once(bridge, timeout_sec=0.1)
+
+            def test_status(self):
+                node = Node('status_probe')
+                node.create_publisher(RCGCD15, 'gc/status', 1)
+    """,
+}
+
+
+def test_pytest_test_classes_are_run(tmp_path: Path) -> None:
+    """pytest instantiates each ``Test…`` class of a test module and runs its ``test*``
+    methods (static ones too) after ``setup_class``: their probes are in the graph
+    (game_controller_spl: 12 sites, pyrobosim: 11 sites never reached before). A probe
+    is a fixture: it is compared with its own package's ends only, so the other
+    package's bridge with another message type is no mismatch of the test's."""
+    root = write(tmp_path, GC_FILES)
+    got = entities(root, ("publishers", "subscriptions"))
+    assert got["/gc_probe"] == [("subscriptions", "/gc/data")]
+    assert got["/status_probe"] == [("publishers", "/gc/status")]
+    assert [path for _, path, _, _ in findings(root, ["ROS004"])] == ["gc_bridge/gc_bridge/bridge.py"]
+
+
+def test_a_test_class_with_an_init_is_not_collected(tmp_path: Path) -> None:
+    """pytest does not collect a ``Test…`` class that defines ``__init__``, nor a class of a
+    module that is no test module: neither runs."""
+    files = dict(GC_FILES)
+    files["gc_bridge/test/test_bridge.py"] = GC_FILES["gc_bridge/test/test_bridge.py"].replace(
+        "            received = []\n", "            def __init__(self):\n                self.received = []\n")
+    files["gc_bridge/gc_bridge/probes.py"] = """
+        from rclpy.node import Node
+
+
+        class TestProbe:
+            def test_probe(self):
+                Node('library_probe')
+    """
+    got = entities(write(tmp_path, files), ("publishers", "subscriptions"))
+    assert "/gc_probe" not in got and "/status_probe" not in got and "/library_probe" not in got

@@ -16,6 +16,7 @@ from typing import Iterator
 
 from .callgraph import CallSite
 from .engine import Effect
+from .fixtures import is_test_class, test_class_calls
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
@@ -327,6 +328,12 @@ class CallSemantics:
                 for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+        klass = self.program.classes[cid]
+        if is_test_class(klass):
+            names = {n for c in [cid, *self.user_bases(cid)] for n in self.program.classes[c].methods}
+            for name in test_class_calls(klass, names):
+                for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
+                    self.schedule_callback(atom)
 
     def _framework_arguments(self, obj: Obj, cid: int) -> list[Value]:
         """What the framework passes when it instantiates ``obj`` (``entry_args`` of its first

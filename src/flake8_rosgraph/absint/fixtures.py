@@ -19,7 +19,7 @@ import ast
 import posixpath
 from typing import Callable
 
-from .program import Function, Module, Program
+from .program import Class, Function, Module, Program
 
 #: Files pytest collects tests from, and the files that share fixtures with a folder.
 CONFTEST = "conftest.py"
@@ -29,6 +29,24 @@ def is_test_file(path: str) -> bool:
     name = posixpath.basename(path)
     return name == CONFTEST or (name.endswith(".py") and (
         name.startswith("test_") or name[:-3].endswith("_test")))
+
+
+#: What pytest calls on an instance of a test class besides its ``test*`` methods.
+CLASS_HOOKS = ("setup_class", "setup_method", "setup", "teardown_method", "teardown", "teardown_class")
+
+
+def is_test_class(klass: Class) -> bool:
+    """Whether pytest collects ``klass``: a top-level ``Test…`` class of a test module
+    without an ``__init__`` of its own (pytest skips those); it instantiates it and runs its
+    ``test*`` methods (static or not) between the :data:`CLASS_HOOKS`."""
+    return klass.parent is None and klass.node.name.startswith("Test") \
+        and "__init__" not in klass.methods and is_test_file(klass.module.path) \
+        and posixpath.basename(klass.module.path) != CONFTEST
+
+
+def test_class_calls(klass: Class, names: set[str]) -> list[str]:
+    """The methods (of ``names``, the class's and its bases') pytest calls on a test class."""
+    return sorted(n for n in names if n.startswith("test") or n in CLASS_HOOKS)
 
 
 class Fixtures:
