@@ -944,3 +944,81 @@ def test_a_test_class_with_an_init_is_not_collected(tmp_path: Path) -> None:
     """
     got = entities(write(tmp_path, files), ("publishers", "subscriptions"))
     assert "/gc_probe" not in got and "/status_probe" not in got and "/library_probe" not in got
+
+
+# -- pytest's built-in request fixture ------------------------------------------------------------------
+REQUEST_FILES = {
+    "chat_api/package.xml": PACKAGE_XML.format(name="chat_api", build="ament_python"),
+    "chat_api/setup.py": _setup("chat_api", ""),
+    "chat_api/chat_api/__init__.py": "",
+    "chat_api/chat_api/api.py": """
+        from std_msgs.msg import String
+
+
+        class TopicAPI:
+            def __init__(self, node):
+                self.node = node
+
+            def publish(self, topic, text):
+                pub = self.node.create_publisher(String, topic, 10)
+                pub.publish(String(data=text))
+    """,
+    "chat_api/test/conftest.py": """
+        import pytest
+        import rclpy
+
+
+        @pytest.fixture
+        def ros():
+            rclpy.init()
+            yield
+            rclpy.shutdown()
+    """,
+    "chat_api/test/test_api.py": """
+        import pytest
+        from rclpy.node import Node
+
+        from chat_api.api import TopicAPI
+
+
+        def test_single_publish(ros, request):
+            node = Node(f'{request.node.originalname}_node')
+            TopicAPI(node).publish(f'{request.node.name}_topic', 'hello')
+
+
+        @pytest.mark.parametrize('text', ['a', 'b'])
+        def test_parametrized_publish(ros, request, text):
+            node = Node(f'{request.node.originalname}_node')
+            TopicAPI(node).publish(f'{request.node.name}_topic', text)
+    """,
+}
+
+
+def test_pytest_request_names_the_test(tmp_path: Path) -> None:
+    """``request.node.originalname`` in a test function is the test's name, and so is
+    ``request.node.name`` unless ``parametrize`` appends the parameters' ids, which the
+    analysis does not spell (rai's API tests: 24 nodes of unknown name before)."""
+    assert entities(write(tmp_path, REQUEST_FILES), ("publishers",)) == {
+        "/test_parametrized_publish_node": [("publishers", "?")],
+        "/test_single_publish_node": [("publishers", "/test_single_publish_topic")]}
+
+
+def test_a_fixtures_request_is_not_one_tests(tmp_path: Path) -> None:
+    """A fixture's ``request`` belongs to whichever test asks for it: a node the fixture names
+    after ``request.node.name`` has an unknown name, not the fixture's own."""
+    files = dict(REQUEST_FILES)
+    files["chat_api/test/conftest.py"] = REQUEST_FILES["chat_api/test/conftest.py"] + """
+
+        @pytest.fixture
+        def probe(ros, request):
+            from rclpy.node import Node
+            return Node(f'{request.node.name}_probe')
+    """
+    files["chat_api/test/test_api.py"] = REQUEST_FILES["chat_api/test/test_api.py"] + """
+
+        def test_probe(probe):
+            TopicAPI(probe).publish('probe_topic', 'hello')
+    """
+    got = entities(write(tmp_path, files), ("publishers",))
+    assert got[None] == [("publishers", "/probe_topic")]
+    assert "/probe_probe" not in got and "/test_probe_probe" not in got

@@ -75,6 +75,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     env[name] = self.fixture_value(fixture, task)
                     if env[name].is_bottom:
                         return BOTTOM, {}, {}, False  # pytest runs it once the fixture is set up
+            request = self.fixtures.request(func) if env.get("request", BOTTOM).is_top else None
+            if request is not None:
+                env["request"] = request
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame
