@@ -9,7 +9,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-from flake8_rosgraph.analysis import build_graph
+from flake8_rosgraph.analysis import analyse, build_graph
+from flake8_rosgraph.explain import explain
 from flake8_rosgraph.launch.api import judged_graph
 
 from test_recall_mechanisms import entities, explained, findings
@@ -734,6 +735,11 @@ def test_the_direct_node_of_a_node_strategy_is_a_node(tmp_path: Path) -> None:
     root = write(tmp_path, CLI_FILES)
     assert [e for node in entities(root).values() for e in node] == [
         ("subscriptions", "/hardware/status")]
+    graph, analyses = analyse(root)
+    [strategy] = [e for e in explain(analyses, graph).explanations if e.site.call == "NodeStrategy"]
+    assert strategy.status == "unknown" and strategy.reasons[-1] == (
+        "`node_name` is not passed: ros2cli.node.strategy.NodeStrategy.__init__ chooses the name "
+        "when it runs")
 
 
 # -- names read from a list parameter ------------------------------------------------------------------

@@ -250,8 +250,11 @@ class _Explainer:
                 continue
             found = self._owner_reasons(key) + self._parameter_reasons(key) if field == "name" else []
             if not found:  # the written value itself is unknown
-                argument = self._field_argument(call, model, effects, field)
+                param, argument = self._field_argument(call, model, effects, field)
                 found = self._origin_reasons(call, scope, argument, module)
+                if param is not None and argument is None:
+                    found = [f"`{param}` is not passed: {model.qualname} chooses the {field} "
+                             "when it runs"]
             reasons.extend(found)
         func = self._function_of(scope)
         if func is not None and self._overflowed(func):
@@ -427,18 +430,19 @@ class _Explainer:
 
     @staticmethod
     def _field_argument(call: ast.Call, model: FunctionModel | None, effects: list[Effect],
-                        field: str) -> ast.expr | None:
-        """The argument that gives the created thing's ``field`` ("name", "namespace" or
-        "type"), as the stub declares it."""
+                        field: str) -> tuple[str | None, ast.expr | None]:
+        """The parameter that gives the created thing's ``field`` ("name", "namespace" or
+        "type"), as the stub declares it, and the call's argument for it (``None`` when the
+        call leaves it to its default)."""
         if model is None:
-            return None
+            return None, None
         for eff in effects:
             arg = ENTITY_KINDS.get(eff.kind, (None, "name"))[1] if field == "name" else field
             for spec in model.effects:
                 ref = dict(spec.args).get(arg)
                 if spec.kind == eff.kind and ref is not None and ref.how in ("arg", "overridable"):
-                    return _argument(call, model.signature, ref.data)
-        return None
+                    return ref.data, _argument(call, model.signature, ref.data)
+        return None, None
 
     def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
                         module: Module) -> list[str]:
