@@ -130,6 +130,7 @@ class _Explainer:
         for eff in analysis.all_effects():
             if eff.kind in CREATION_KINDS and not switched_off(eff):
                 self.effects.setdefault((eff.path, eff.line, eff.column), []).append(eff)
+        self.wrappers = _workspace_only_calls(analysis)
         self.graph_nodes: dict[tuple, list] = {}
         self.graph_entities: dict[tuple, list] = {}
         for node in graph.nodes:
@@ -156,6 +157,9 @@ class _Explainer:
             if found is None:
                 continue
             site = Site(module.path, call.lineno, module.column(call), found[0])
+            key = (site.path, site.line, site.column)
+            if key in self.wrappers and key not in self.effects:
+                continue  # the workspace's own ``create_*``: the library call inside it is the site
             yield self._explain(site, found[1], module, call, scope, unresolved)
 
     def _creation_call(self, call: ast.Call, klass: ast.ClassDef | None,
@@ -246,8 +250,11 @@ class _Explainer:
                 continue
             found = self._owner_reasons(key) + self._parameter_reasons(key) if field == "name" else []
             if not found:  # the written value itself is unknown
-                argument = self._field_argument(call, model, effects, field)
+                param, argument = self._field_argument(call, model, effects, field)
                 found = self._origin_reasons(call, scope, argument, module)
+                if param is not None and argument is None:
+                    found = [f"`{param}` is not passed: {model.qualname} chooses the {field} "
+                             "when it runs"]
             reasons.extend(found)
         func = self._function_of(scope)
         if func is not None and self._overflowed(func):
@@ -423,18 +430,19 @@ class _Explainer:
 
     @staticmethod
     def _field_argument(call: ast.Call, model: FunctionModel | None, effects: list[Effect],
-                        field: str) -> ast.expr | None:
-        """The argument that gives the created thing's ``field`` ("name", "namespace" or
-        "type"), as the stub declares it."""
+                        field: str) -> tuple[str | None, ast.expr | None]:
+        """The parameter that gives the created thing's ``field`` ("name", "namespace" or
+        "type"), as the stub declares it, and the call's argument for it (``None`` when the
+        call leaves it to its default)."""
         if model is None:
-            return None
+            return None, None
         for eff in effects:
             arg = ENTITY_KINDS.get(eff.kind, (None, "name"))[1] if field == "name" else field
             for spec in model.effects:
                 ref = dict(spec.args).get(arg)
                 if spec.kind == eff.kind and ref is not None and ref.how in ("arg", "overridable"):
-                    return _argument(call, model.signature, ref.data)
-        return None
+                    return ref.data, _argument(call, model.signature, ref.data)
+        return None, None
 
     def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
                         module: Module) -> list[str]:
@@ -464,6 +472,18 @@ class _Explainer:
 
 
 # -- syntax helpers ------------------------------------------------------------------------
+def _workspace_only_calls(analysis: Analysis) -> frozenset[tuple[str, int, int]]:
+    """Places of calls the analysis resolved, on every run that reached them, to workspace
+    code only (``api.create_service(...)`` of a wrapper class the workspace defines, held in a
+    variable): not creation sites, whatever their method's name."""
+    callees: dict[tuple[str, int, int], set[str]] = {}
+    graph = analysis.call_graph()
+    for task in graph.tasks():
+        for call in graph.sites(task):
+            callees.setdefault((call.path, call.line, call.column), set()).add(call.callee[0])
+    return frozenset(key for key, kinds in callees.items() if kinds == {"task"})
+
+
 def _calls_with_scope(tree: ast.Module):
     """Every call with its innermost enclosing function (or lambda) and class definition."""
     stack: list[tuple[ast.AST, ast.AST | None, ast.ClassDef | None]] = [(tree, None, None)]

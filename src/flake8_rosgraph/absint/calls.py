@@ -16,6 +16,7 @@ from typing import Iterator
 
 from .callgraph import CallSite
 from .engine import Effect
+from .fixtures import is_test_class, test_class_calls
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
@@ -24,6 +25,10 @@ from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
                      Extern, ExternBound, FuncAtom, Input, Obj, Partial, Record, Seq, SuperAtom, Value,
                      atoms, const, from_input, join_all, soften)
+
+
+#: ``object.__new__``: what a class's own ``__new__`` calls to make the instance.
+OBJECT_NEW = "builtins.object.__new__"
 
 
 class CallSemantics:
@@ -62,7 +67,7 @@ class CallSemantics:
         """Callables passed to unknown code may be called by it: analyse them as entries."""
         for value in list(args.pos) + list(args.kw.values()):
             for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod, Partial)):
+                if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
                     self.schedule_callback(atom)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
@@ -78,7 +83,17 @@ class CallSemantics:
             return self.call_bound_extern(atom, args, node)
         if isinstance(atom, Partial):
             return self._call_atom(atom.func, _applied(atom, args), node)
+        method = self._callable_object(atom)
+        if method is not None:
+            return self.call(method, args, node)
         return TOP
+
+    def _callable_object(self, atom: Atom) -> Value | None:
+        """``__call__`` bound to ``atom`` when it is an instance of a workspace class that
+        defines one (a functor handed over as a callback, called like a function)."""
+        if not isinstance(atom, Obj) or not isinstance(atom.cls, ClassAtom):
+            return None
+        return self.class_attr(self.mro(atom.cls), "__call__", atom)
 
     # -- user code ----------------------------------------------------------------------------
     def param_names(self, func: Function) -> list[str]:
@@ -182,6 +197,12 @@ class CallSemantics:
         while isinstance(atom, Partial):
             bound = _applied(atom, bound)
             atom = atom.func
+        method = self._callable_object(atom)
+        if method is not None:
+            for called in method:
+                self.schedule_callback(called if not bound.pos and not bound.kw else
+                                       Partial(called, tuple(bound.pos), tuple(bound.kw.items()), bound.star))
+            return
         if not isinstance(atom, (FuncAtom, BoundMethod)):
             return
         receiver = atom.receiver if isinstance(atom, BoundMethod) else None
@@ -192,22 +213,69 @@ class CallSemantics:
         self.an.schedule(self.an.function_task(atom.fid, ctx))
 
     def instantiate(self, cls: ClassAtom, args: "Args", node) -> Value:
+        new = self.class_attr(self.mro(cls), "__new__", None)
+        if new is not None and any(isinstance(a, FuncAtom) for a in new):
+            return self._instantiate_through_new(cls, new, args, node)
+        return atoms([self.allocate(cls, node, args)])
+
+    def allocate(self, cls: ClassAtom, node, args: "Args | None" = None) -> Obj:
+        """A new instance of ``cls`` made at ``node``; built by its ``__init__`` when ``args``."""
         obj = Obj(self._site(node), cls)
         self.an.allocated.add(cls.cid)
         self.an.objects.setdefault(cls.cid, set()).add(obj)
-        self.construct(obj, args, node)
-        return atoms([obj])
+        if args is not None:
+            self.construct(obj, args, node)
+        return obj
+
+    def _instantiate_through_new(self, cls: ClassAtom, new: Value, args: "Args", node) -> Value:
+        """``Cls(...)`` of a class that defines ``__new__`` (a singleton, a cache of
+        instances): Python calls ``__new__(Cls, ...)`` and then ``__init__`` on what it
+        returns when that is an instance of the class; anything else is the result as is."""
+        result = self.call(new, Args([atoms([cls]), *args.pos], args.kw, args.star), node)
+        for atom in result:
+            if isinstance(atom, Obj) and isinstance(atom.cls, ClassAtom) and cls in self.mro(atom.cls):
+                self.construct(atom, args, node)
+        return result
 
     def construct(self, obj: Obj, args: "Args", node) -> None:
-        init = self.class_attr(self.mro(obj.cls), "__init__", obj)
-        if init is not None:
-            self.call(init, args, node)
+        fields = self.init_fields(obj.cls)
+        if fields is not None:
+            self._set_fields(obj, *fields, args)
+            post = self.class_attr(self.mro(obj.cls), "__post_init__", obj) if fields[1] else None
+            if post is not None:
+                self.call(post, Args([], {}, False), node)
+        else:
+            init = self.class_attr(self.mro(obj.cls), "__init__", obj)
+            if init is not None:
+                self.call(init, args, node)
         for lib_cls in [c.qualname for c in self.mro(obj.cls) if isinstance(c, Extern)]:
             for name in self.lib.called_methods(lib_cls):
                 method = self.class_attr(self.mro(obj.cls), name, obj)
                 for atom in method or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+
+    def _set_fields(self, obj: Obj, fields: list, positional: bool, args: "Args") -> None:
+        """Write what a field-built ``__init__`` stores (see :mod:`.fieldclasses`): each field its
+        argument, by position when ``positional``, else by keyword; a field not given keeps
+        its default (a ``field(...)`` default is unknown); under ``*args``/``**kwargs`` every
+        field not named may be given, so it is unknown. Keyword-only classes whose library
+        ``__init__`` is not modelled only get the fields their keywords name."""
+        given = [f for f in fields if f.init]
+        pos = list(args.pos) if positional else []
+        for i, found in enumerate(given):
+            site = ("a", obj.site, found.name)
+            if i < len(pos):
+                self.an.write(site, pos[i])
+            elif found.name in args.kw:
+                self.an.write(site, args.kw[found.name])
+            elif args.star or (found.computed_default and positional):
+                self.an.write(site, TOP)
+            elif positional and found.has_default:
+                default = self.class_attr(self.mro(obj.cls), found.name, obj)
+                self.an.write(site, TOP if default is None else default)
+            elif positional:
+                self.an.write(site, TOP)  # a required field not passed: TypeError, or unseen
 
     def instantiate_entry(self, cid: int) -> None:
         """Analyse a class nothing instantiates, as if a library created it with unknown arguments."""
@@ -243,6 +311,9 @@ class CallSemantics:
         return added
 
     def _schedule_entry(self, obj: Obj, cid: int) -> None:
+        fields = self.init_fields(obj.cls)
+        if fields is not None:  # built by unknown code: not with the fields' defaults
+            self._set_fields(obj, fields[0], fields[1], Args([], {}, True))
         init = self.class_attr(self.mro(obj.cls), "__init__", obj)
         given = self._framework_arguments(obj, cid)
         for atom in init or ():
@@ -258,6 +329,12 @@ class CallSemantics:
                 for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
                     if isinstance(atom, BoundMethod):
                         self.schedule_callback(atom)
+        klass = self.program.classes[cid]
+        if is_test_class(klass):
+            names = {n for c in [cid, *self.user_bases(cid)] for n in self.program.classes[c].methods}
+            for name in test_class_calls(klass, names):
+                for atom in self.class_attr(self.mro(obj.cls), name, obj) or ():
+                    self.schedule_callback(atom)
 
     def _framework_arguments(self, obj: Obj, cid: int) -> list[Value]:
         """What the framework passes when it instantiates ``obj`` (``entry_args`` of its first
@@ -312,6 +389,11 @@ class CallSemantics:
 
     # -- library code ---------------------------------------------------------------------------
     def call_extern(self, qualname: str, args: "Args", node) -> Value:
+        if qualname == OBJECT_NEW:
+            # ``super().__new__(cls)`` in a ``__new__``: a new, not yet initialised instance.
+            classes = args.pos[0] if args.pos else TOP
+            made = [self.allocate(a, node) for a in classes if isinstance(a, ClassAtom)]
+            return atoms(made) if made and not classes.is_top else TOP
         if qualname.startswith("builtins."):
             return self.call_builtin(qualname[len("builtins."):], args, node)
         owner, _, method = qualname.rpartition(".")
@@ -562,6 +644,9 @@ class CallSemantics:
     # -- builtins ---------------------------------------------------------------------------
     def call_builtin(self, name: str, args: "Args", node) -> Value:
         pos = args.pos
+        if name == "str" and len(pos) == 1 and not args.kw and not args.star \
+                and pos[0].origin is not None and all(isinstance(c, str) for c in pos[0].consts() or ()):
+            return pos[0]  # ``str()`` of a text setting is the setting, still named by its origin
         if name in PURE_BUILTINS and not args.kw and not args.star:
             if name == "str" and not pos:
                 return const("")

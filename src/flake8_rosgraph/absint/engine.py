@@ -36,6 +36,7 @@ from types import MappingProxyType
 from typing import Hashable, Mapping
 
 from .callgraph import CallGraph
+from .fixtures import is_test_class
 from .library import LibraryModel
 from .program import Program
 from .values import BOTTOM, TOP, BoundMethod, ClassAtom, FuncAtom, Obj, Value
@@ -408,8 +409,8 @@ class Analysis:
         return bool(first)
 
     def _entry_classes(self) -> bool:
-        """Leaf subclasses of ``entry`` library classes, and the classes frameworks
-        instantiate, that no analysed code instantiates."""
+        """Leaf subclasses of ``entry`` library classes, the classes frameworks instantiate,
+        and pytest's test classes, that no analysed code instantiates."""
         added = False
         bases_of = {c.cid: self._interp.user_bases(c.cid) for c in self.program.classes}
         has_sub = {b for bases in bases_of.values() for b in bases}
@@ -418,7 +419,7 @@ class Analysis:
             if cid in self.allocated:
                 continue
             registered = klass.parent is None and f"{klass.module.name}.{klass.qualname}" in self.framework_classes
-            if registered or (cid not in has_sub and any(
+            if registered or is_test_class(klass) or (cid not in has_sub and any(
                     self.library.class_flag(q, "entry") for q in self._interp.library_bases(cid))):
                 self._interp.instantiate_entry(cid)
                 added = True

@@ -219,6 +219,8 @@ class ExpressionSemantics:
             return out
         if isinstance(atom, Const) and isinstance(atom.value, (str, bytes, tuple)):
             return fold(lambda s, i: s[i], [atoms([atom]), index])
+        if isinstance(atom, ClassAtom) and self.is_generic_alias(atom):
+            return atoms([atom])
         return TOP
 
     def e_Starred(self, node: ast.Starred) -> Value:
@@ -324,7 +326,9 @@ class ExpressionSemantics:
                 out = out.join(fold(lambda s: s, [atoms([atom])]) if len(atom.value) == 1 else TOP)
             else:
                 return TOP
-        return out
+        # A collection supplied from outside (a parameter's list): its default's elements are
+        # some of the run's at most; kept as known names beside the unknown rest.
+        return TOP.join(out) if value.origin is not None else out
 
     @staticmethod
     def truth(value: Value, by_default: bool = True) -> bool | None:

@@ -19,7 +19,8 @@ import ast
 import posixpath
 from typing import Callable
 
-from .program import Function, Module, Program
+from .program import Class, Function, Module, Program
+from .values import TOP, FuncAtom, Record, Value, atoms, const
 
 #: Files pytest collects tests from, and the files that share fixtures with a folder.
 CONFTEST = "conftest.py"
@@ -29,6 +30,24 @@ def is_test_file(path: str) -> bool:
     name = posixpath.basename(path)
     return name == CONFTEST or (name.endswith(".py") and (
         name.startswith("test_") or name[:-3].endswith("_test")))
+
+
+#: What pytest calls on an instance of a test class besides its ``test*`` methods.
+CLASS_HOOKS = ("setup_class", "setup_method", "setup", "teardown_method", "teardown", "teardown_class")
+
+
+def is_test_class(klass: Class) -> bool:
+    """Whether pytest collects ``klass``: a top-level ``Test…`` class of a test module
+    without an ``__init__`` of its own (pytest skips those); it instantiates it and runs its
+    ``test*`` methods (static or not) between the :data:`CLASS_HOOKS`."""
+    return klass.parent is None and klass.node.name.startswith("Test") \
+        and "__init__" not in klass.methods and is_test_file(klass.module.path) \
+        and posixpath.basename(klass.module.path) != CONFTEST
+
+
+def test_class_calls(klass: Class, names: set[str]) -> list[str]:
+    """The methods (of ``names``, the class's and its bases') pytest calls on a test class."""
+    return sorted(n for n in names if n.startswith("test") or n in CLASS_HOOKS)
 
 
 class Fixtures:
@@ -53,6 +72,25 @@ class Fixtures:
         params = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
         given = _parametrized(func.node)
         return {name: visible[name] for name in params if name in visible and name not in given}
+
+    def request(self, func: Function) -> Value | None:
+        """What pytest passes a test function's ``request`` parameter when no workspace fixture
+        of that name exists: its built-in request, whose ``node.originalname`` is the test's
+        name (so is ``node.name``, unless ``parametrize`` adds the parameters' ids), and whose
+        ``function`` is the test. ``None`` for anything else (a fixture's request depends on
+        which test asks for it)."""
+        if func.parent is not None or func.cls is not None or isinstance(func.node, ast.Lambda) \
+                or not func.node.name.startswith("test") or not is_test_file(func.module.path):
+            return None
+        a = func.node.args
+        if "request" not in {p.arg for p in a.posonlyargs + a.args + a.kwonlyargs} \
+                or "request" in self._visible_in(func.module):
+            return None
+        name = const(func.node.name)
+        item = Record("_pytest.python.Function", (
+            ("name", TOP if _parametrized(func.node) else name), ("originalname", name)))
+        return atoms([Record("_pytest.fixtures.FixtureRequest", (
+            ("function", atoms([FuncAtom(func.fid)])), ("node", atoms([item]))))])
 
     def _visible_in(self, module: Module) -> dict[str, int]:
         known = self._visible.get(module.name)

@@ -23,6 +23,7 @@ from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, M
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
+from .fieldclasses import Field
 from .fixtures import Fixtures
 from .instances import InstanceFacts
 from .objects import ObjectSemantics
@@ -44,6 +45,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         self.frame: Frame | None = None
         self._mro_memo: dict[int, tuple[list, tuple]] = {}
         self._extern_mro: dict[str, list] = {}  # library class -> its MRO as Extern atoms
+        self._own_fields: dict[int, list[Field]] = {}  # cid -> its body's fields (fieldclasses.py)
+        #: Every name the class bodies walked so far annotate, and how many classes that is:
+        #: only those names can be fields (a cheap first test, see ``is_annotated``).
+        self._annotated: set[str] = set()
+        self._annotated_upto = 0
         self._pure_tests: dict[int, bool] = {}  # id(branch test) -> see ``_pure_test``
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
@@ -69,6 +75,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     env[name] = self.fixture_value(fixture, task)
                     if env[name].is_bottom:
                         return BOTTOM, {}, {}, False  # pytest runs it once the fixture is set up
+            request = self.fixtures.request(func) if env.get("request", BOTTOM).is_top else None
+            if request is not None:
+                env["request"] = request
             for name in func.cellvars & env.keys():
                 self.an.write(("c", func.fid, name), env[name])
         outer, self.frame = self.frame, frame

@@ -12,13 +12,17 @@ import sys
 from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom, Extern,
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
-from .calls import Args
+from .calls import OBJECT_NEW, Args
+from .fieldclasses import FIELD_BASES, Field, decorated_fields, own_fields
 
 #: The attributes that name a class.
 _NAME_ATTRS = ("__module__", "__name__", "__qualname__")
 #: Top-level modules of the standard library (``builtins`` included): an ``abc.ABC`` or
 #: ``threading.Thread`` base is no unresolved library class.
 _STDLIB = frozenset(sys.stdlib_module_names) | {"builtins"}
+#: Libraries whose classes add no ``__class_getitem__`` or metaclass ``__getitem__`` of
+#: their own to a workspace class deriving from them (``Generic``, ``Protocol``, ``ABC``).
+_GENERIC_SAFE = frozenset({"typing", "typing_extensions", "abc", "collections"})
 
 
 class ObjectSemantics:
@@ -30,7 +34,10 @@ class ObjectSemantics:
         out = BOTTOM
         for atom in value:
             out = out.join(self._attr_of(atom, attr))
-            if out.is_top:
+            if out.is_top and out.is_saturated:
+                # Only the saturated ⊤ absorbs what the other atoms give: a ⊤ that keeps
+                # known names still takes theirs (stopping there made the result depend on
+                # the set's iteration order, which varies from run to run).
                 return out
         return out
 
@@ -40,6 +47,8 @@ class ObjectSemantics:
             if attr == "__class__":
                 return atoms([atom.cls])
             field_value = self.an.read(("a", atom.site, attr), task)
+            if not field_value.is_bottom and self.is_annotated(attr) and attr in self.field_names(atom.cls):
+                return field_value  # its __init__ always sets it: the class-level value is a default
             found = self.class_attr(self.mro(atom.cls), attr, atom)
             if found is None:
                 if attr == "__module__" and field_value.is_bottom and isinstance(atom.cls, Extern):
@@ -78,6 +87,8 @@ class ObjectSemantics:
             if here in order:
                 order = order[order.index(here) + 1:]
             found = self.class_attr(order, attr, atom.receiver)
+            if found is None and attr == "__new__":
+                return atoms([Extern(OBJECT_NEW)])
             return TOP if found is None else found
         if isinstance(atom, ModuleAtom):
             return self.import_member(atom.name, attr)
@@ -111,6 +122,76 @@ class ObjectSemantics:
             return self.extern(f"{cls.qualname}.{attr}")
         module, name = identity
         return const(module if attr == "__module__" else name)
+
+    def is_generic_alias(self, cls: ClassAtom) -> bool:
+        """Whether ``cls[...]`` is a generic alias of workspace class ``cls`` (``Base[T]`` as a
+        base class, ``Connector[Msg]()``): Python's ``typing`` makes the alias stand for the
+        class, as a base (``__mro_entries__``) and when called. Not taken where the subscript
+        may run code of its own: a metaclass (an ``Enum``'s ``Color['RED']`` is a member), a
+        ``__class_getitem__``, or a library class other than ``typing``'s and ``abc``'s above it."""
+        for atom in self.mro(cls):
+            if isinstance(atom, Extern):
+                if atom.qualname != "builtins.object" and atom.qualname.partition(".")[0] not in _GENERIC_SAFE:
+                    return False
+                continue
+            if not isinstance(atom, ClassAtom):
+                return False
+            klass = self.program.classes[atom.cid]
+            if "__class_getitem__" in klass.methods or any(
+                    kw.arg == "metaclass" for kw in klass.node.keywords):
+                return False
+        return True
+
+    def init_fields(self, cls: ClassAtom) -> tuple[list[Field], bool] | None:
+        """The fields ``cls``'s ``__init__`` is written from (see :mod:`.fieldclasses`), base
+        classes' first, and whether arguments bind to them by position too (a dataclass, a
+        ``NamedTuple``) or by keyword only (pydantic, a library base no stub models); ``None``
+        when the workspace's own ``__init__`` (or a modelled library's) comes first."""
+        order = self.mro(cls)
+        for atom in order:
+            if isinstance(atom, ClassAtom):
+                klass = self.program.classes[atom.cid]
+                if decorated_fields(klass):
+                    return self._merged_fields(order), True
+                if "__init__" in klass.methods:
+                    return None
+                continue
+            if not isinstance(atom, Extern) or atom.qualname == "builtins.object":
+                return None
+            if atom.qualname in FIELD_BASES:
+                return self._merged_fields(order), atom.qualname == "typing.NamedTuple"
+            if _unresolved(atom, self.lib):
+                return self._merged_fields(order), False
+            if self.lib.method(atom.qualname, "__init__") is not None:
+                return None
+        return None
+
+    def is_annotated(self, attr: str) -> bool:
+        """Whether some class body the program has walked annotates ``attr`` (classes are
+        numbered as their modules are first needed, so the set grows with them)."""
+        classes = self.program.classes
+        while self._annotated_upto < len(classes):
+            self._annotated.update(f.name for f in self._fields_of(self._annotated_upto))
+            self._annotated_upto += 1
+        return attr in self._annotated
+
+    def field_names(self, cls: Atom) -> frozenset[str]:
+        found = self.init_fields(cls) if isinstance(cls, ClassAtom) else None
+        return frozenset(f.name for f in found[0] if f.init) if found else frozenset()
+
+    def _merged_fields(self, order: list[Atom]) -> list[Field]:
+        merged: dict[str, Field] = {}
+        for atom in reversed(order):
+            if isinstance(atom, ClassAtom):
+                for found in self._fields_of(atom.cid):
+                    merged[found.name] = found
+        return list(merged.values())
+
+    def _fields_of(self, cid: int) -> list[Field]:
+        known = self._own_fields.get(cid)
+        if known is None:
+            known = self._own_fields[cid] = own_fields(self.program.classes[cid])
+        return known
 
     def unresolved_base(self, cls: Atom) -> str | None:
         """The first base class of workspace class ``cls`` (along its MRO) that is imported from

@@ -490,7 +490,10 @@ class Program:
                 folder = folder.rpartition("/")[0]
         if beside is None or beside == top:
             return name
-        if top in self._tops and not beside.startswith("<") and not mod.program:
+        if top in self._tops and not beside.startswith("<") and (not mod.program or beside == mod.name):
+            # A package module with a ``#!`` line importing its package by its own file name
+            # (``axis_camera/axis_camera.py``: ``from axis_camera.axis_ptz import …``): it runs
+            # through the package (an entry point imports it), where the name is the package.
             return name
         return beside + dot + rest
 

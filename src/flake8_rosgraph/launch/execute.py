@@ -28,7 +28,9 @@ from .actions import (Action, Condition, DeclareArgument, GroupAction, Include, 
                       PkgShare, PushNamespace, SetConfiguration, SetParameter, SetRemap, Subst, Text,
                       ThisDir, Unknown, Unsupported, Var)
 from .model import ExecutableRef, Guard, LaunchedNode, ParamFileRef, ParamValue, Remap, System
+from .frontend_subst import parse_substitutions
 from .packages import PackageIndex
+from .yaml_reader import scalar
 
 #: Include depth at which a (probably recursive) include chain is cut.
 MAX_INCLUDE_DEPTH = 16
@@ -137,6 +139,17 @@ class Executor:
                 self.declare(action.actions, scope)
 
     # -- substitutions ---------------------------------------------------------------------------
+    def setting(self, value: object, scope: Scope) -> object:
+        """A parameter's value as the node gets it: XML and YAML launch files keep a value
+        with substitutions as written (``$(var depth_topic)``), which launch replaces and
+        then types like YAML; ``None`` (unreadable) when they do not resolve here."""
+        if not isinstance(value, str) or "$(" not in value:
+            return value
+        try:
+            return scalar(self.value(parse_substitutions(value), scope).strip())
+        except Unresolved:
+            return None
+
     def value(self, subst: Subst, scope: Scope) -> str:
         if isinstance(subst, Text):
             return subst.text
@@ -225,7 +238,8 @@ class Executor:
             except Unresolved as exc:
                 system.problems.append(_problem(action.location, f"SetRemap not followed: {exc}"))
         elif isinstance(action, SetParameter):
-            scope.params.append(ParamValue(action.name, action.value, action.location, from_scope=True))
+            scope.params.append(ParamValue(action.name, self.setting(action.value, scope), action.location,
+                                           from_scope=True))
         elif isinstance(action, DeclareArgument):
             if action.name not in scope.configs and action.default is not None and not scope.opaque:
                 scope.configs[action.name] = self.value_or_none(action.default, scope)
@@ -292,7 +306,7 @@ class Executor:
             src, dst = get(source, "remap"), get(target, "remap")
             if src is not None and dst is not None:
                 remaps.append(Remap(src, dst, location))
-        params = list(scope.params) + [ParamValue(n, v, loc) for n, v, loc in action.params]
+        params = list(scope.params) + [ParamValue(n, self.setting(v, scope), loc) for n, v, loc in action.params]
         files: list[ParamFileRef] = []
         for subst, location in action.param_files:
             written = get(subst, "parameters")

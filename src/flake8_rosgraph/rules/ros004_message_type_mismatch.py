@@ -31,7 +31,10 @@ class MessageTypeMismatch(Rule):
     reported when one of its choices agrees, and a call whose every choice
     disagrees is reported once, naming them all. Nor when every type in use on the name has both
     roles (publishers and subscriptions of that type): those are separate
-    working systems, such as the same demo written in C++ and in Python. The
+    working systems, such as the same demo written in C++ and in Python. Test
+    fixtures (nodes in `test/` folders and `test_*.py` modules) are compared only
+    with the fixtures of their own tests and the production ends of the package
+    they test, never with other packages. The
     finding is reported
     at each endpoint whose type differs from the type most endpoints of the
     name use (on a tie, the publishers' or servers' type), since that is the
@@ -66,9 +69,17 @@ class MessageTypeMismatch(Rule):
         for producer in PRODUCERS:
             consumer = PEER_KIND[producer]
             for name in sorted(set(index.names(producer)) | set(index.names(consumer))):
-                typed = [ep for ep in (*index.using(producer, name), *index.using(consumer, name))
-                         if ep.entity.type is not None]
-                yield from self._mismatches(sorted(typed, key=lambda ep: ep.sort_key), producer)
+                typed = sorted((ep for ep in (*index.using(producer, name), *index.using(consumer, name))
+                                if ep.entity.type is not None), key=lambda ep: ep.sort_key)
+                # Production ends are judged together; a test fixture's ends with what they see
+                # (the fixtures of their scope, the production ends of the package under test),
+                # reported at the fixture's own ends only (see :mod:`.fixtures`).
+                yield from self._mismatches([ep for ep in typed if ep.scope is None], producer)
+                for scope in sorted({ep.scope for ep in typed if ep.scope is not None}):
+                    own = [ep for ep in typed if ep.scope == scope]
+                    seen = [ep for ep in typed if ep.scope == scope or own[0].sees(ep)]
+                    yield from (f for f in self._mismatches(seen, producer)
+                                if any(f.location == ep.entity.location for ep in own))
 
     def _mismatches(self, typed: list[Endpoint], producer: str) -> Iterator[Finding]:
         counts = Counter(ep.entity.type for ep in typed)
