@@ -245,7 +245,7 @@ Atom = Union[Const, Obj, FuncAtom, BoundMethod, ClassAtom, ModuleAtom, Extern, E
 class Value:
     """An element of the value lattice; construct with :func:`atoms`, :data:`TOP`, :data:`BOTTOM`."""
 
-    __slots__ = ("atoms", "soft", "hints", "origin", "_hash", "_repr")
+    __slots__ = ("atoms", "soft", "hints", "origin", "_hash", "_repr", "_ordered")
 
     def __init__(self, items: frozenset | None, soft: bool = False,
                  hints: frozenset | None = frozenset(), origin: Origin | None = None) -> None:
@@ -260,6 +260,7 @@ class Value:
         self.origin = origin if items is None or items else None
         self._hash = hash((items, self.soft, self.hints, self.origin))
         self._repr: str | None = None
+        self._ordered: tuple[Atom, ...] | None = None
 
     @property
     def depth(self) -> int:
@@ -285,7 +286,16 @@ class Value:
         return [h.value for h in sorted(self.hints, key=repr)] if self.hints else []
 
     def __iter__(self) -> Iterator[Atom]:
-        return iter(()) if self.atoms is None else iter(self.atoms)
+        """The atoms in the order of their text, never the set's: what the analysis does for
+        each (calls, schedules, instances) must not follow the hash seed, or neither would
+        which contexts a function gets first, nor its output (kept per value, as it is immutable)."""
+        if self.atoms is None:
+            return iter(())
+        if len(self.atoms) < 2:
+            return iter(self.atoms)
+        if self._ordered is None:
+            self._ordered = tuple(sorted(self.atoms, key=repr))
+        return iter(self._ordered)
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Value) and self.atoms == other.atoms and \
