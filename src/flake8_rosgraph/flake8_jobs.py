@@ -17,9 +17,9 @@ Works with the fork, spawn and forkserver start methods (spawned workers learn o
 the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 4.0.1
 (``Manager.checkers``) to 7.x (``Manager.filenames`` / ``Manager.results``).
 
-With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the
-machine has a second core and the cache can keep the report, a forked child process
-analyses meanwhile and leaves the report in the cache; the checkers report nothing, and once
+With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the run
+checks :data:`MIN_FILES_BESIDE` files or more, the machine has a second core and the cache can
+keep the report, a forked child process analyses meanwhile and leaves the report in the cache; the checkers report nothing, and once
 flake8 is done the main process reads the report and adds each file's results the same way.
 A cold or edited run then costs about the longer of the two instead of their sum. When the
 child could not leave a report (it died, or failed), the main process analyses itself: the

@@ -59,7 +59,7 @@ class CallSemantics:
         if len(func.atoms) == 1:  # the common case: nothing to order
             return self._call_atom(next(iter(func.atoms)), args, node)
         out = BOTTOM
-        for atom in sorted(func, key=repr):
+        for atom in func:
             out = out.join(self._call_atom(atom, args, node))
         return out
 

@@ -97,12 +97,8 @@ class InstanceFacts:
         return [], ""
 
     def _unmodelled_instances(self, value: Value) -> list[Obj]:
-        if value.atoms is None:
-            return []
         classes = self.lib.classes
-        found = [a for a in value.atoms if type(a) is Obj and type(a.cls) is Extern
-                 and a.cls.qualname not in classes]
-        return sorted(found, key=repr) if len(found) > 1 else found
+        return [a for a in value if type(a) is Obj and type(a.cls) is Extern and a.cls.qualname not in classes]
 
     def _record(self, kind: str, values: tuple, node: ast.AST) -> None:
         frame = self.frame

@@ -330,9 +330,9 @@ def _unresolved(atom: Atom, lib) -> bool:
 def _flatten_bases(value: Value) -> list[Atom]:
     """Base classes in source order from the analysed ``(base, …)`` tuples of a class."""
     out: list[Atom] = []
-    for seq in sorted((a for a in value if isinstance(a, Seq)), key=repr):
+    for seq in (a for a in value if isinstance(a, Seq)):
         for item in seq.items:
-            for atom in sorted(item, key=repr):
+            for atom in item:
                 if isinstance(atom, (ClassAtom, Extern)) and atom not in out:
                     out.append(atom)
     return out

@@ -137,7 +137,7 @@ def qos_of(value: Value, depth_profile: Value | None = None) -> dict[str, Any] |
     """
     if value.is_top or value.is_bottom or value.soft:
         return None
-    profiles = [_profile(atom, depth_profile) for atom in sorted(value, key=repr)]
+    profiles = [_profile(atom, depth_profile) for atom in value]
     if any(p is None for p in profiles):
         return None
     first, *rest = profiles
