@@ -98,6 +98,7 @@ def main(argv: list[str] | None = None) -> int:
         time.sleep(RACY_SECONDS + 0.5)
         corpus = Corpus.scan(Path(copy))
         bench = WorkspaceBench(corpus)
+        bench.compile_measured()
         version, with_plugin = plugin_state(bench)
         steps = workspace_steps(bench, with_plugin, args.peer)
         summaries = run_steps(steps, args.runs)

@@ -38,6 +38,7 @@ from typing import Any, Callable, Iterator
 
 from . import __version__, flake8_jobs
 from .cache import WorkspaceReport, kept_state, start_run, workspace_report
+from .codes import RULE_CODES
 from .escaping import escape_text
 from .options import (INTERNAL_ERROR_CODE, CodeFilter, Settings, flake8_selectors, register_flake8_options,
                       root_problem)
@@ -94,9 +95,7 @@ def _current_run() -> _Run:
     """The run ``parse_options`` set up; flake8 always calls it, but be safe if it did not."""
     if _RUN is not None:
         return _RUN
-    from .rules import RULES
-
-    return _Run(Settings.resolve({}, os.environ), CodeFilter.build((), RULES))
+    return _Run(Settings.resolve({}, os.environ), CodeFilter.build((), RULE_CODES))
 
 
 def _root_for(run: _Run, path: Path) -> Path:
@@ -273,11 +272,9 @@ class RosGraphChecker:
             print(f"flake8: error: {problem}", file=sys.stderr)
             raise SystemExit(2)
         try:
-            from .rules import RULES
-
-            codes = CodeFilter.build(flake8_selectors(options), RULES)
+            codes = CodeFilter.build(flake8_selectors(options), RULE_CODES)
             stdin = list(getattr(options, "filenames", None) or []) == ["-"]
-            _RUN = _Run(settings, codes, selected=_ros_selected(options, codes, RULES), stdin=stdin,
+            _RUN = _Run(settings, codes, selected=_ros_selected(options, codes), stdin=stdin,
                         checked=CheckedFiles.from_flake8(options), given=_given_folders(options))
         except Exception as exc:
             if settings.debug:
@@ -347,14 +344,14 @@ def checker_results(run: _Run, filename: str) -> list[tuple[int, int, str]]:
                for f in findings])
 
 
-def _ros_selected(options: Any, codes: CodeFilter, rules: Any) -> bool:
+def _ros_selected(options: Any, codes: CodeFilter) -> bool:
     """Whether flake8's ``--select``/``--ignore`` (and the off-by-default opt-ins) leave any
     ROS code to report; ``--per-file-ignores`` only ever removes more. Unsure: yes."""
     try:
         from flake8.style_guide import Decision, DecisionEngine
 
         decider = DecisionEngine(options)
-        candidates = [rule.code for rule in rules] + [INTERNAL_ERROR_CODE]
+        candidates = [rule.code for rule in RULE_CODES] + [INTERNAL_ERROR_CODE]
         return any(codes(code) and decider.decision_for(code) is Decision.Selected for code in candidates)
     except Exception:
         return True
