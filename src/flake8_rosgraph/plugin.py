@@ -73,6 +73,12 @@ class _Run:
     #: an editor's buffer): a root without a workspace marker never reaches beyond them.
     given: tuple[Path, ...] = ()
 
+    @functools.cached_property
+    def given_root(self) -> Path:
+        """``--rosgraph-root`` made absolute: once per run rather than once per checked file."""
+        assert self.settings.root is not None
+        return Path(os.path.abspath(self.settings.root))
+
 
 _RUN: _Run | None = None
 
@@ -100,7 +106,7 @@ def _current_run() -> _Run:
 
 def _root_for(run: _Run, path: Path) -> Path:
     if run.settings.root is not None:
-        return Path(os.path.abspath(run.settings.root))
+        return run.given_root
     directory = path.parent
     if directory not in run.roots:
         try:
@@ -155,6 +161,9 @@ def _by_other_end(report: WorkspaceReport) -> dict[str, list[Finding]]:
 
 
 def _relative(path: Path, root: Path) -> str | None:
+    inside = str(path)[len(str(root)) + 1:]
+    if inside and str(path)[:len(str(root)) + 1] == f"{str(root).rstrip(os.sep)}{os.sep}":
+        return inside.replace(os.sep, "/")  # the common case, without pathlib's parsing
     if root.is_file():  # a lone file is its own root; its findings are named relative to its folder
         root = root.parent
     try:

@@ -80,6 +80,22 @@ class Instantiator:
     def __init__(self, root: Path) -> None:
         self.root = Path(root)
         self._files: dict[str, list[Section] | str] = {}
+        #: The graph the indexes below are of (every system of a workspace binds to the same one).
+        self._graph: RosGraph | None = None
+        self._by_location: dict[Location, list[RosNode]] = {}
+        self._named_cpp: list[RosNode] = []
+
+    def _index(self, graph: RosGraph) -> None:
+        """Index ``graph``'s nodes once for all of its systems, not once per launch file."""
+        if self._graph is graph:
+            return
+        self._graph = graph
+        self._by_location = {}
+        for node in graph.nodes:
+            self._by_location.setdefault(node.location, []).append(node)
+        # A C++ node of unknown name stands for the owner of entities made through a pointer
+        # (``node->create_client``), not for a node of its own: it stays as written.
+        self._named_cpp = [node for node in graph.nodes if node.language == "cpp" and node.name is not None]
 
     def sections(self, path: str) -> list[Section] | str:
         """A parameter file's sections, or why it cannot be read."""
@@ -94,9 +110,7 @@ class Instantiator:
 
     def system(self, graph: RosGraph, system: System) -> None:
         """Bind every launched node of ``system`` whose code is known; fills ``system.instances``."""
-        by_location: dict[Location, list[RosNode]] = {}
-        for node in graph.nodes:
-            by_location.setdefault(node.location, []).append(node)
+        self._index(graph)
         reported: set[tuple[str, int, str]] = set()
         for launched in system.nodes:
             for file in launched.param_files:
@@ -117,7 +131,7 @@ class Instantiator:
                 continue
             classes = set(launched.target.node_classes)
             for site in launched.target.node_sites:
-                for code in by_location.get(site, ()):
+                for code in self._by_location.get(site, ()):
                     if (site, code.cls) in classes:
                         system.instances.append(self.instance(launched, code))
         system.problems.extend(sorted({problem for instance in system.instances
@@ -131,9 +145,8 @@ class Instantiator:
         No tie is guessed from words in the sources (``Joy`` in ``sensor_msgs::msg::Joy``)."""
         if not target.cpp_sources and not target.cpp_plugins and not target.cpp_linked:
             return []
-        # A C++ node of unknown name stands for the owner of entities made through a pointer
-        # (``node->create_client``), not for a node of its own: it stays as written.
-        named = [node for node in graph.nodes if node.language == "cpp" and node.name is not None]
+        self._index(graph)
+        named = self._named_cpp
         sources = set(target.cpp_sources)
         plugins = {plugin.rsplit("::", 1)[-1] for plugin in target.cpp_plugins}
         found = [node for node in named if node.location.path in sources
