@@ -32,6 +32,7 @@ from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
 from .ros205_unmatched_parameter_section import UnmatchedParameterSection
+from .shared import shared_indexes
 
 RULES: tuple[Rule, ...] = (
     PublisherWithoutSubscriber(),
@@ -84,8 +85,9 @@ def run_rules(graph: RosGraph, config: RuleConfig, select: Iterable[str] | None 
     Findings are located at Python ends only (:mod:`flake8_rosgraph.cpp.reporting`).
     """
     findings: set[Finding] = set()
-    for rule in selected_rules(select):
-        findings.update(rule.check(graph, config))
+    with shared_indexes():
+        for rule in selected_rules(select):
+            findings.update(rule.check(graph, config))
     return at_python_ends(findings)  # C++ ends are partners only
 
 

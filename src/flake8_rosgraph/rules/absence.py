@@ -97,6 +97,7 @@ from .exempt import ExemptNames
 from .infrastructure import infrastructure_slip
 from .launch_context import under_any, unseen_code_names, unseen_remap_targets
 from .near_miss import NearMissFinder
+from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
 
@@ -116,9 +117,9 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = unseen_remap_targets(graph) | unseen_code_names(graph)
+        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph))
         peer_kind = PEER_KIND[self.kind]
-        scopes = LaunchScopes(graph.systems)
+        scopes = once("launch scopes", graph, lambda: LaunchScopes(graph.systems))
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
                        and not under_any(ep.entity.name, unseen)

@@ -19,6 +19,7 @@ nodes see production nodes only.
 """
 from __future__ import annotations
 
+from functools import lru_cache
 from pathlib import PurePosixPath
 
 from ..graph.model import RosNode
@@ -32,6 +33,7 @@ def _is_test_module(basename: str) -> bool:
     return stem.startswith("test_") or stem.endswith("_test") or stem == "conftest"
 
 
+@lru_cache(maxsize=4096)
 def fixture_scope(path: str) -> str | None:
     """The scope prefix of a test file (``"pkg/"``, ``""`` at the root), or ``None`` for production code."""
     parts = PurePosixPath(path).parts

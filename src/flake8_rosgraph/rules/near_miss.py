@@ -31,6 +31,7 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Callable, Iterable, Sequence
 
 from ..graph.model import RosNode
@@ -86,8 +87,10 @@ def _without_one_token(tokens: Sequence[str]) -> Iterable[str]:
             yield _join([*tokens[:i], *tokens[i + 1:]])
 
 
-def _deletions(word: str, depth: int) -> set[str]:
-    """``word`` and every string made from it by deleting up to ``depth`` characters.
+@lru_cache(maxsize=65536)
+def _deletions(word: str, depth: int) -> frozenset[str]:
+    """``word`` and every string made from it by deleting up to ``depth`` characters
+    (kept per word: the same tokens recur across names and across the four absence rules).
 
     Two strings within *k* edits (with transpositions) always share such a
     variant with at most *k* deletions on each side, so matching variants
@@ -98,7 +101,7 @@ def _deletions(word: str, depth: int) -> set[str]:
     for _ in range(depth):
         frontier = {w[:i] + w[i + 1:] for w in frontier for i in range(len(w))}
         variants |= frontier
-    return variants
+    return frozenset(variants)
 
 
 def _depth(token: str) -> int:

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from ..graph.model import NAMED_KINDS, PEER_KIND, Entity, RosGraph, RosNode
 from .exempt import ExemptNames
 from .fixtures import node_scope, sees
+from .shared import once
 
 #: What is known of an endpoint whose name is not: its message type and how its name ends.
 Unresolved = tuple["str | None", "str | None"]
@@ -83,6 +84,11 @@ class EndpointIndex:
 
     @classmethod
     def build(cls, graph: RosGraph) -> EndpointIndex:
+        """The index of ``graph``'s ends (one for all the rules of a run: :mod:`.shared`)."""
+        return once("endpoints", graph, lambda: cls._build(graph))
+
+    @classmethod
+    def _build(cls, graph: RosGraph) -> EndpointIndex:
         by_name: dict[tuple[str, str], list[Endpoint]] = defaultdict(list)
         unresolved_types: dict[str, set[Unresolved]] = defaultdict(set)
         unresolved_production: dict[str, set[Unresolved]] = defaultdict(set)
