@@ -511,3 +511,58 @@ setattr(a, 'eleven', 11)
     stored = {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"}
     assert attribute_stores(tree, mentions_setattr=False) == stored
     assert attribute_stores(tree, mentions_setattr=True) == stored | {"eleven"}
+
+
+#: A package of the workspace's own messages, and a node filling one of them.
+MSGS = {
+    "robot_msgs/package.xml": NAV["nav/package.xml"].replace("nav", "robot_msgs").replace("ament_python", "ament_cmake"),
+    "robot_msgs/msg/Battery.msg": "float32 voltage\nfloat32 percentage\n",
+}
+REPORTER = package("power", {
+    "reporter": """
+        import rclpy
+        from rclpy.node import Node
+        from robot_msgs.msg import Battery
+
+
+        class Reporter(Node):
+            def __init__(self):
+                super().__init__('battery_reporter')
+                self.out = self.create_publisher(Battery, '/battery', 10)
+                self.create_timer(1.0, self.tick)
+
+            def tick(self):
+                msg = Battery()
+                msg.voltage = 12.1
+                msg.current = 0.4
+                self.out.publish(msg)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Reporter())
+    """,
+}, {"battery_reporter": "reporter"})
+
+
+def test_the_workspaces_own_messages_are_kept_with_its_metadata(tmp_path: Path, monkeypatch) -> None:
+    """Its message files are read with the other metadata, once: a Python edit reads none of
+    them again, and an edit of a message file is seen."""
+    from flake8_rosgraph import metadata
+
+    root = write(tmp_path / "ws", {**MSGS, **REPORTER})
+    field_finding = [("power/power/reporter.py", 15, "ROS107")]
+    assert [(p, line, code) for p, line, code, _ in _report(root)] == field_finding  # no field 'current'
+
+    walked: list[Path] = []
+    original = metadata.interface_files
+    monkeypatch.setattr(metadata, "interface_files", lambda folder, *a: walked.append(folder) or original(folder, *a))
+
+    reporter = root / "power/power/reporter.py"
+    reporter.write_text(reporter.read_text().replace("12.1", "12.2"))
+    assert [(p, line, code) for p, line, code, _ in _report(root)] == field_finding
+    assert walked == []  # the metadata, message files included, came from the cache
+
+    (root / "robot_msgs/msg/Battery.msg").write_text("float32 voltage\nfloat32 current\nfloat32 percentage\n")
+    assert _report(root) == []
+    assert walked == [root]

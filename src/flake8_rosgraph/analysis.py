@@ -110,12 +110,13 @@ def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo:
     graph.nodes = sorted(graph.nodes + nodes, key=lambda n: (n.fqn or "", n.location, n.language))
 
 
-def _interfaces(root: Path, interface_dirs: Sequence[Path], graph: RosGraph,
+def _interfaces(interface_dirs: Sequence[Path], graph: RosGraph, metadata: WorkspaceMetadata,
                 diagnostics: list[Diagnostic]) -> None:
-    """Interface definitions for the message rules; a failure here must not cost the graph."""
+    """Interface definitions for the message rules (the workspace's own files as the metadata
+    read them); a failure here must not cost the graph."""
     from .interfaces.catalogue import load_catalogue
     try:
-        graph.interfaces = load_catalogue(root if root.is_dir() else None, interface_dirs)
+        graph.interfaces = load_catalogue(None, interface_dirs, metadata.interface_files)
         diagnostics.extend(Diagnostic(path, 1, why) for path, why in graph.interfaces.problems)
     except Exception as exc:
         graph.interfaces = None
@@ -231,7 +232,7 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         graph = RosGraph(nodes=python.nodes, usage=python.usage, messages=python.messages)
         _cpp_nodes(root, graph, diagnostics, cpp_memo)
         graph.systems = _launch_systems(root, graph, python, metadata, diagnostics)
-        _interfaces(root, interface_dirs, graph, diagnostics)
+        _interfaces(interface_dirs, graph, metadata, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]
         diagnostics.append(Diagnostic("", 0, f"internal error: {type(exc).__name__}: {exc} "

@@ -72,7 +72,7 @@ KEEP_ENTRIES = 16
 MAX_ENTRY_BYTES = 16 * 1024 * 1024
 
 #: Version of the metadata entry (:func:`metadata_key`); bump it when the metadata changes shape.
-METADATA_FORMAT = 1
+METADATA_FORMAT = 2
 #: The digests of the workspace's inputs from earlier runs (see :class:`InputDigests`).
 INPUT_INDEX = "inputs.json"
 #: What earlier runs learnt of each Python file without its tree (see :class:`.workspace.Outlines`).

@@ -25,7 +25,7 @@ from typing import Any
 
 #: The modules whose dataclasses are facts (relative to the package).
 FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
-                "launch.packages", "python_facts", "metadata")
+                "launch.packages", "python_facts", "metadata", "interfaces.catalogue")
 
 
 #: The floats JSON cannot write, as ``repr`` gives them.

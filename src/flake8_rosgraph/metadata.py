@@ -1,8 +1,9 @@
 """What the workspace's metadata says: its packages, the classes they register, its launch files.
 
 The packages and their executables (:mod:`.launch.packages`), the classes packages register
-with frameworks (:mod:`.registrations`), the XML/YAML launch files (:mod:`.launch.discover`)
-and which files are Python (:mod:`.workspace`) are read from manifests, build files, plugin
+with frameworks (:mod:`.registrations`), the XML/YAML launch files (:mod:`.launch.discover`),
+which files are Python (:mod:`.workspace`) and the packages' own interface (message)
+files (:mod:`.interfaces.catalogue`) are read from manifests, build files, plugin
 and robot descriptions, shebangs and C++ sources — never from the Python modules an edit
 usually touches. Read together, they are kept together
 between runs (:func:`.cache.metadata_key`), so an edit to Python code does not read them again.
@@ -13,6 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .graph.model import Diagnostic, internal_error
+from .interfaces.catalogue import InterfaceFile, interface_files
 from .launch.discover import frontend_launch_files
 from .launch.packages import PackageIndex, find_packages
 from .registrations import registered_classes
@@ -29,6 +31,8 @@ class WorkspaceMetadata:
     #: Root-relative paths of the Python files (see :func:`.workspace.python_files`: which files
     #: without a suffix are programs is read from shebangs and build files, not from modules).
     python_files: list[str] = field(default_factory=list)
+    #: The workspace packages' ``msg``/``srv``/``action`` files, in path order.
+    interface_files: list[InterfaceFile] = field(default_factory=list)
     #: What could not be read, each naming the file or package.
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
@@ -55,4 +59,8 @@ def read_metadata(root: Path) -> WorkspaceMetadata:
         meta.diagnostics.append(internal_error("launch files not found", exc))
     meta.python_files = [path.relative_to(root).as_posix()
                          for path in workspace.python_files(root, meta.diagnostics)]
+    try:
+        meta.interface_files = interface_files(root, root)
+    except Exception as exc:
+        meta.diagnostics.append(internal_error("interface definitions not read", exc))
     return meta

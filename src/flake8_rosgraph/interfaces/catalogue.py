@@ -102,26 +102,52 @@ class Catalogue:
 
     def add_tree(self, folder: Path, root: Path | None = None) -> None:
         """Every package (a folder with ``package.xml``) under ``folder`` and its interface files."""
-        count = 0
-        for package_dir, package in _packages(folder):
-            for kind in _KINDS:
-                sub = package_dir / kind
-                if not sub.is_dir() or sub.is_symlink():
+        self.add_files(interface_files(folder, root))
+
+    def add_files(self, found: Iterable[InterfaceFile]) -> None:
+        """The definitions of ``found`` (later ones winning), and the problems of those not read."""
+        for file in found:
+            if file.text is None:
+                self.problems.append((file.shown, file.problem))
+            else:
+                self.add_text(file.text, file.package, file.kind, file.name, file.shown)
+
+
+@dataclass(frozen=True)
+class InterfaceFile:
+    """One interface file of a package as read, or why it was not: what the workspace's
+    metadata keeps (:mod:`flake8_rosgraph.metadata`), so that a run after a Python edit
+    does not walk the workspace for them again."""
+
+    package: str
+    kind: str
+    name: str
+    shown: str          # the path diagnostics name
+    text: str | None
+    problem: str = ""   # why ``text`` is None
+
+
+def interface_files(folder: Path, root: Path | None = None) -> list[InterfaceFile]:
+    """The interface files of every package under ``folder``, in path order (see :meth:`Catalogue.add_tree`)."""
+    found: list[InterfaceFile] = []
+    for package_dir, package in _packages(folder):
+        for kind in _KINDS:
+            sub = package_dir / kind
+            if not sub.is_dir() or sub.is_symlink():
+                continue
+            for path in sorted(sub.iterdir()):
+                if path.suffix != "." + kind or not _NAME_OK.match(path.stem):
                     continue
-                for path in sorted(sub.iterdir()):
-                    if path.suffix != "." + kind or not _NAME_OK.match(path.stem):
-                        continue
-                    count += 1
-                    if count > MAX_INTERFACE_FILES:
-                        self.problems.append((_shown(path, root), f"more than {MAX_INTERFACE_FILES} "
-                                              "interface files; the rest are not read"))
-                        return
-                    text = _read(path)
-                    if text is None:
-                        self.problems.append((_shown(path, root), "interface file not read: not a "
-                                              f"regular file, or larger than {MAX_INTERFACE_BYTES} bytes"))
-                        continue
-                    self.add_text(text, package, kind, path.stem, _shown(path, root))
+                if len(found) >= MAX_INTERFACE_FILES:
+                    found.append(InterfaceFile(package, kind, path.stem, _shown(path, root), None,
+                                               f"more than {MAX_INTERFACE_FILES} interface files; "
+                                               "the rest are not read"))
+                    return found
+                text = _read(path)
+                found.append(InterfaceFile(package, kind, path.stem, _shown(path, root), text,
+                                           "" if text is not None else "interface file not read: not a "
+                                           f"regular file, or larger than {MAX_INTERFACE_BYTES} bytes"))
+    return found
 
 
 _NAME_OK = re.compile(r"^[A-Z][A-Za-z0-9]*$")
@@ -175,11 +201,15 @@ def standard_catalogue() -> Catalogue:
     return catalogue
 
 
-def load_catalogue(root: Path | None, extra: Iterable[Path] = ()) -> Catalogue:
-    """Standard definitions, then the user's interface folders, then the workspace's own."""
+def load_catalogue(root: Path | None, extra: Iterable[Path] = (),
+                   workspace: Iterable[InterfaceFile] | None = None) -> Catalogue:
+    """Standard definitions, then the user's interface folders, then the workspace's own
+    (``workspace``: those files as read before, else read from ``root`` now)."""
     catalogue = standard_catalogue()
     for folder in extra:
         catalogue.add_tree(Path(folder))
-    if root is not None and Path(root).is_dir():
+    if workspace is not None:
+        catalogue.add_files(workspace)
+    elif root is not None and Path(root).is_dir():
         catalogue.add_tree(Path(root), Path(root))
     return catalogue
