@@ -13,6 +13,12 @@ file's ROS results to the results the workers sent back — the same code, line,
 column and text the checker would have yielded, with the ``noqa`` line flake8's file
 processor gives — before flake8 filters and reports them as usual.
 
+The analysis is the run's critical path: it takes longer than the workers' share of the
+checks, and with ``--jobs=auto`` there is one worker per core, so it competes with them for a
+core. Each worker therefore lowers its own priority (:data:`WORKER_NICENESS`) when it first
+defers a file to the main process; the analysis keeps its core and the run ends sooner, the
+workers using what the analysis leaves.
+
 Works with the fork, spawn and forkserver start methods (spawned workers learn of
 the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 4.0.1
 (``Manager.checkers``) to 7.x (``Manager.filenames`` / ``Manager.results``).
@@ -44,7 +50,11 @@ MIN_FILES_BESIDE = 16
 #: flake8's codes for a file it could not read or parse: the plugin never runs there.
 _UNCHECKED = frozenset({"E902", "E999"})
 
+#: Added to a pool worker's nice value while the main process analyses (see the module docstring).
+WORKER_NICENESS = 5
+
 _deferring = False  # in the main process during run_parallel (forked workers inherit it)
+_yielded = False  # this worker process has lowered its priority
 
 Results = list  # of (line, column, text) as a checker yields them
 
@@ -53,6 +63,18 @@ def deferred() -> bool:
     """Whether ROS results of this process's checkers are added by the main process."""
     return _deferring or (os.environ.get(DEFER_ENV) is not None
                           and multiprocessing.parent_process() is not None)
+
+
+def yield_to_analysis() -> None:
+    """In a pool worker whose ROS results the main process adds: lower this process's priority,
+    once, so that the analysis the main process runs meanwhile keeps its core. Never in flake8's
+    main process, which runs the analysis itself."""
+    global _yielded
+    if _yielded or multiprocessing.parent_process() is None:
+        return
+    _yielded = True
+    with contextlib.suppress(AttributeError, OSError):  # no os.nice (Windows), or refused
+        os.nice(WORKER_NICENESS)
 
 
 def install(results_of: Callable[[str], Results], wanted: Callable[[], bool],

@@ -300,8 +300,11 @@ class RosGraphChecker:
         except Exception as exc:  # not even the rules could be imported
             yield 1, 0, _internal_error_text(_describe(exc)), type(self)
             return
-        if not run.selected or flake8_jobs.deferred():
-            return  # nothing could be reported, or the main process adds it (flake8 -jN)
+        if not run.selected:
+            return  # nothing could be reported
+        if flake8_jobs.deferred():
+            flake8_jobs.yield_to_analysis()
+            return  # the main process adds it (flake8 -jN)
         _note_buffer(run, self.filename, self.lines)
         for line, column, text in checker_results(run, self.filename):
             yield line, column, text, type(self)

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -155,3 +156,28 @@ def test_no_analysis_when_no_ros_code_can_be_reported(python: str, workspace: Pa
     assert "ROS" not in result.stdout
     assert analyses(log) == []
     assert not (workspace / ".rosgraph-cache").exists()
+
+
+def _niceness_after_yielding(_: object) -> int:
+    from flake8_rosgraph import flake8_jobs
+
+    flake8_jobs.yield_to_analysis()
+    flake8_jobs.yield_to_analysis()  # once per worker, not once per deferred file
+    return os.nice(0)
+
+
+@pytest.mark.skipif(not hasattr(os, "nice"), reason="no process priorities on this platform")
+@pytest.mark.parametrize("method", ["fork", "spawn"])
+def test_pool_workers_yield_the_core_to_the_analysis(method: str) -> None:
+    """A worker that defers its ROS results lowers its own priority once; flake8's main
+    process, which runs the analysis, never does."""
+    import multiprocessing
+
+    from flake8_rosgraph import flake8_jobs
+
+    before = os.nice(0)
+    flake8_jobs.yield_to_analysis()
+    assert os.nice(0) == before
+    with multiprocessing.get_context(method).Pool(1) as pool:
+        worker = pool.map(_niceness_after_yielding, [None])[0]
+    assert worker == min(before + flake8_jobs.WORKER_NICENESS, 19)
