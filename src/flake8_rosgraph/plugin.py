@@ -161,9 +161,9 @@ def _by_other_end(report: WorkspaceReport) -> dict[str, list[Finding]]:
 
 
 def _relative(path: Path, root: Path) -> str | None:
-    inside = str(path)[len(str(root)) + 1:]
-    if inside and str(path)[:len(str(root)) + 1] == f"{str(root).rstrip(os.sep)}{os.sep}":
-        return inside.replace(os.sep, "/")  # the common case, without pathlib's parsing
+    prefix, text = os.path.join(str(root), ""), str(path)
+    if len(text) > len(prefix) and text.startswith(prefix):  # the common case, without pathlib's parsing
+        return text[len(prefix):].replace(os.sep, "/")
     if root.is_file():  # a lone file is its own root; its findings are named relative to its folder
         root = root.parent
     try:
@@ -297,7 +297,7 @@ class RosGraphChecker:
     def run(self) -> Iterator[tuple[int, int, str, type]]:
         try:
             run = _current_run()
-        except Exception as exc:  # not even the rules could be imported
+        except Exception as exc:  # not even the settings could be read
             yield 1, 0, _internal_error_text(_describe(exc)), type(self)
             return
         if not run.selected:
