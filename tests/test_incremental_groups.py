@@ -189,9 +189,7 @@ def test_a_damaged_or_foreign_group_entry_is_analysed_again(root: Path, analysed
         if damage == "garbage":
             entry.write_text("{not json")
         else:
-            obj = json.loads(entry.read_text())
-            obj["signature"] = "0" * 64
-            entry.write_text(json.dumps(obj))
+            entry.write_text("0" * 64 + "\n" + entry.read_text().split("\n", 1)[1])
     (root / "nav/nav/monitor.py").write_text((root / "nav/nav/monitor.py").read_text() + "\n# edited\n")
     analysed.clear()
     assert _report(root) == []
@@ -305,7 +303,7 @@ def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypa
     # the edited module, and the one of its group the analysis reads (the empty __init__ it never needs)
     assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
 
-    (root / cache.CACHE_DIR_NAME / cache.OUTLINES).write_text('{"files": {}, "signature": "0"}')
+    (root / cache.CACHE_DIR_NAME / cache.OUTLINES).write_text("0" * 64 + '\n{"files": {}}')
     read.clear()
     topics.write_text(topics.read_text().replace("'/scna'", "'/scan'") + "# back\n")
     assert _report(root) == []  # a foreign outline index: every file is read again, nothing lost

@@ -24,7 +24,8 @@ later run on unchanged code) reads that file.
   the OS if a process dies) makes one process build while the others wait, and
   re-check the cache once they get the lock; entries are written to a
   temporary file and renamed into place, so readers never see half a file.
-* **Trust**: entries are signed with a per-user secret (:func:`machine_secret`),
+* **Trust**: entries are signed with a per-user secret (:func:`machine_secret`): a line
+  with the HMAC of the JSON text that follows it (:func:`signed_text`),
   so an entry committed to the repository or written elsewhere is ignored; the
   cache only writes into, and prunes, a folder it owns (:func:`_own_dir`), only
   its own files, never through a link. An unreadable, corrupt or foreign entry
@@ -440,32 +441,43 @@ def machine_secret() -> bytes | None:
         return None
 
 
-def _signature(secret: bytes, obj: dict[str, Any]) -> str:
-    """HMAC of an entry's canonical JSON (everything but the signature itself)."""
-    canonical = json.dumps({k: v for k, v in obj.items() if k != "signature"}, sort_keys=True,
-                           separators=(",", ":"), ensure_ascii=True)
-    return hmac.new(secret, canonical.encode("ascii"), hashlib.sha256).hexdigest()
+def _signature(secret: bytes, body: bytes) -> bytes:
+    """HMAC of an entry's JSON text, as hex digits."""
+    return hmac.new(secret, body, hashlib.sha256).hexdigest().encode("ascii")
+
+
+def signed_text(obj: dict[str, Any], secret: bytes) -> str:
+    """What :func:`write_signed` stores: a line with the signature, then ``obj``'s JSON text.
+
+    The signature covers the text exactly as stored, so a reader checks it before it parses
+    anything, and never re-encodes what it read to check it (that cost every read as much as
+    the parsing)."""
+    body = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    return f"{_signature(secret, body.encode('ascii')).decode('ascii')}\n{body}"
 
 
 def read_signed(path: Path, secret: bytes) -> dict[str, Any] | None:
     """The JSON object stored at ``path`` when this user's secret signed it; ``None`` when it is
     missing, unreadable, corrupt, too big or written by anyone else (untrusted)."""
     try:
-        obj = json.loads(read_bytes(path, path.parent, MAX_ENTRY_BYTES).decode("utf-8"))
-    except (OSError, ValueError, RecursionError):
+        data = read_bytes(path, path.parent, MAX_ENTRY_BYTES)
+    except OSError:
         return None
-    signature = obj.get("signature") if isinstance(obj, dict) else None
-    if not isinstance(signature, str) or not hmac.compare_digest(signature, _signature(secret, obj)):
+    signature, newline, body = data.partition(b"\n")
+    if not newline or not hmac.compare_digest(signature, _signature(secret, body)):
         return None
-    return obj
+    try:
+        obj = json.loads(body.decode("ascii"))
+    except (ValueError, RecursionError):
+        return None
+    return obj if isinstance(obj, dict) else None
 
 
 def write_signed(path: Path, obj: dict[str, Any], secret: bytes) -> None:
     """Sign ``obj`` and write it to ``path`` atomically (the caller has checked that the cache
     owns the folder); an object larger than :data:`MAX_ENTRY_BYTES` is not written (the cache
     stays bounded on disk), and a failed write only costs the keeping."""
-    obj = {**obj, "signature": _signature(secret, obj)}
-    text = json.dumps(obj, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    text = signed_text(obj, secret)
     if len(text) <= MAX_ENTRY_BYTES:
         with contextlib.suppress(OSError):
             _replace_with(path, text)

@@ -82,16 +82,16 @@ def test_corrupt_entry_is_ignored_and_replaced(fake_engine: Path, workspace: Pat
     report = cache.load_or_build(workspace, SETTINGS)
     assert _found(report) == RAW_STANDARD
     assert len(analyses(fake_engine)) == 2
-    assert json.loads(entry.read_text())["format"] == cache.ENTRY_FORMAT
+    assert json.loads(entry.read_text().split("\n", 1)[1])["format"] == cache.ENTRY_FORMAT
 
 
 def test_entry_stored_under_another_key_is_not_trusted(fake_engine: Path, workspace: Path) -> None:
     cache.load_or_build(workspace, SETTINGS)
     key = cache.cache_key(workspace, SETTINGS)
     entry = workspace / cache.CACHE_DIR_NAME / f"{key}.json"
-    data = json.loads(entry.read_text())
-    data["key"] = "0" * 64
-    entry.write_text(json.dumps(data))
+    data = json.loads(entry.read_text().split("\n", 1)[1])
+    data["key"] = "0" * 64  # stored under another key: signed, so this user's, but not for this key
+    entry.write_text(cache.signed_text(data, cache.machine_secret()))
     cache.load_or_build(workspace, SETTINGS)
     assert len(analyses(fake_engine)) == 2
 
@@ -176,9 +176,10 @@ def test_a_damaged_or_foreign_input_index_only_costs_reading(fake_engine: Path, 
     key = cache.cache_key(workspace, SETTINGS)
     cache.load_or_build(workspace, SETTINGS)
     index = workspace / cache.CACHE_DIR_NAME / cache.INPUT_INDEX
-    forged = json.loads(index.read_text())
+    signature, body = index.read_text().split("\n", 1)
+    forged = json.loads(body)
     forged["files"] = {rel: [*identity[:4], "0" * 64] for rel, identity in forged["files"].items()}
-    for text in (damage, json.dumps(forged)):  # a forged digest is not signed by this user
+    for text in (damage, f"{signature}\n{json.dumps(forged)}"):  # a forged digest is not signed by this user
         index.write_text(text)
         cache.start_run()
         assert cache.cache_key(workspace, SETTINGS,

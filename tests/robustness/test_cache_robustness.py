@@ -73,7 +73,8 @@ def test_damaged_entry_is_rebuilt(damage: str, workspace: Path) -> None:
     assert entry.is_file()
     entry.write_bytes(DAMAGE[damage](workspace))
     assert cache.load_or_build(workspace, SETTINGS) == expected
-    assert json.loads(entry.read_text(encoding="utf-8"))["format"] == cache.ENTRY_FORMAT, "not repaired"
+    assert json.loads(entry.read_text(encoding="utf-8").split("\n", 1)[1])["format"] == cache.ENTRY_FORMAT, \
+        "not repaired"
 
 
 @pytest.mark.parametrize("blocker", ["entry_is_a_folder", "lock_is_a_folder", "cache_dir_is_a_file",
@@ -143,7 +144,7 @@ def test_concurrent_first_lookups_agree_and_leave_a_valid_entry(workspace: Path)
     for worker in workers:
         worker.join(timeout=120)
     assert results == [("ok", expected)] * 4
-    stored = json.loads(entry_path(workspace).read_text(encoding="utf-8"))
+    stored = json.loads(entry_path(workspace).read_text(encoding="utf-8").split("\n", 1)[1])
     assert stored["key"] == cache.cache_key(workspace, SETTINGS)
     assert not list(entry_path(workspace).parent.glob(".tmp-*")), "temporary files left behind"
 

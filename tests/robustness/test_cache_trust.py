@@ -72,22 +72,24 @@ def test_committed_entry_is_not_trusted(ws: Path, signature: str | None) -> None
     entry.parent.mkdir()
     obj = forged_entry(ws)
     if signature == "signed-elsewhere":  # a valid signature, with another machine's secret
-        obj["signature"] = cache._signature(b"another machine's secret, 32 bytes+", obj)
+        entry.write_text(cache.signed_text(obj, b"another machine's secret, 32 bytes+"))
     elif signature is not None:
-        obj["signature"] = signature
-    entry.write_text(json.dumps(obj))
+        entry.write_text(f"{signature}\n{json.dumps(obj)}")
+    else:
+        entry.write_text(json.dumps(obj))
     assert cache.load_or_build(ws, SETTINGS) == expected
 
 
 def test_own_entry_is_reused(ws: Path) -> None:
     first = cache.load_or_build(ws, SETTINGS)
     entry = entry_of(ws)
-    stored = json.loads(entry.read_text())
+    signature, body = entry.read_text().split("\n", 1)
+    stored = json.loads(body)
     stored["findings"] = []  # tampering after signing breaks the signature
-    entry.write_text(json.dumps(stored))
+    entry.write_text(f"{signature}\n{json.dumps(stored, sort_keys=True, separators=(',', ':'))}")
     cache.start_run()
     assert cache.load_or_build(ws, SETTINGS) == first
-    assert json.loads(entry.read_text())["findings"], "the tampered entry was not replaced"
+    assert json.loads(entry.read_text().split("\n", 1)[1])["findings"], "the tampered entry was not replaced"
 
 
 @posix_only
