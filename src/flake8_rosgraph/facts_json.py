@@ -93,13 +93,17 @@ def _stable(obj: Any) -> str:
     return json.dumps(obj, sort_keys=True)
 
 
+#: JSON values that stand for themselves: decoded without a call (most fields are such).
+_PLAIN = frozenset({str, int, float, bool, type(None)})
+
+
 def from_obj(obj: Any) -> Any:
     """The value :func:`to_obj` made ``obj`` from; :class:`NotAFact` for anything else."""
     kind = type(obj)
-    if kind is str or kind is int or obj is None or kind is bool or kind is float:
+    if kind in _PLAIN:
         return obj
     if kind is list:
-        return [from_obj(item) for item in obj]
+        return _items(obj)
     if kind is not dict or len(obj) not in (1, 2):
         raise NotAFact("not an encoded fact")
     if "c" in obj:
@@ -109,9 +113,9 @@ def from_obj(obj: Any) -> Any:
             raise NotAFact("not a non-finite number")
         return float(obj["n"])
     if "t" in obj:
-        return tuple(from_obj(item) for item in _list(obj["t"]))
+        return tuple(_items(_list(obj["t"])))
     if "f" in obj:
-        return frozenset(from_obj(item) for item in _list(obj["f"]))
+        return frozenset(_items(_list(obj["f"])))
     if "m" in obj:
         pairs = [_list(pair) for pair in _list(obj["m"])]
         if any(len(pair) != 2 for pair in pairs):
@@ -130,10 +134,15 @@ def _instance(obj: dict) -> Any:
         raise NotAFact(f"{obj['c']}: {len(values)} values for {len(names)} fields")
     try:
         if cls in _POSITIONAL:
-            return cls(*[from_obj(value) for value in values])
-        return cls(**{name: from_obj(value) for name, value in zip(names, values)})
+            return cls(*_items(values))
+        return cls(**dict(zip(names, _items(values))))
     except TypeError as exc:  # a field without a default not stored: not a fact class
         raise NotAFact(str(exc)) from exc
+
+
+def _items(values: list) -> list:
+    """:func:`from_obj` of each of ``values``; plain ones are taken as they are, without a call."""
+    return [value if type(value) in _PLAIN else from_obj(value) for value in values]
 
 
 def _list(obj: Any) -> list:
