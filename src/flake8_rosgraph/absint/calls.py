@@ -29,6 +29,9 @@ from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom
 
 #: ``object.__new__``: what a class's own ``__new__`` calls to make the instance.
 OBJECT_NEW = "builtins.object.__new__"
+#: What a ``@contextlib.contextmanager`` function's call returns: a record whose ``entered``
+#: field is what the generator yields (the stdlib stub gives its ``__enter__``).
+GENERATOR_CONTEXT_MANAGER = "contextlib._GeneratorContextManager"
 
 
 class CallSemantics:
@@ -173,6 +176,9 @@ class CallSemantics:
         task = self.an.function_task(fid, ctx)
         self.record_call(node, ("task", task))
         self.an.run_now(task)
+        if func.context_manager:
+            entered = self.an.read(("yield", task), self.frame.task)
+            return atoms([Record(GENERATOR_CONTEXT_MANAGER, (("entered", entered),))])
         return self.an.read(("ret", task), self.frame.task)
 
     def record_call(self, node, callee: tuple, args: tuple = (), effects: tuple = ()) -> None:
@@ -548,6 +554,8 @@ class CallSemantics:
         return result
 
     def model_return(self, spec: ReturnSpec, bound: dict, receiver: Atom | None, node) -> Value:
+        if spec.how == "enter":
+            return self.call_method(bound.get(spec.data, TOP), "__enter__", [], node)
         if spec.how == "instance":
             qualname = self.lib.canonical(spec.data)
             return atoms([Obj(self._site(node), Extern(qualname))])

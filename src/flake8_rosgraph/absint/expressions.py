@@ -236,11 +236,14 @@ class ExpressionSemantics:
 
     def e_Yield(self, node: ast.Yield) -> Value:
         """What the generator yields is kept per function (``("yield", fid)``): a framework
-        that takes a generator's first value (a pytest fixture) reads it there."""
+        that takes a generator's first value (a pytest fixture) reads it there; and per task
+        (``("yield", task)``), for the caller of a ``@contextmanager`` function, whose
+        ``with … as x`` gets what that call's generator yields, not every call's."""
         value = self.eval(node.value) if node.value is not None else const(None)
         func = self.frame.func
         if func is not None and isinstance(node, ast.Yield):
             self.an.write(("yield", func.fid), value)
+            self.an.write(("yield", self.frame.task), value)
         return TOP
 
     e_YieldFrom = e_Yield
@@ -271,7 +274,8 @@ class ExpressionSemantics:
     e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
 
     def e_Call(self, node: ast.Call) -> Value:
-        self.an.reached_calls.add((self.frame.module.path, node.lineno, node.col_offset))
+        self.an.reached_calls.setdefault(self.frame.task, set()).add(
+            (self.frame.module.path, node.lineno, node.col_offset))
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)

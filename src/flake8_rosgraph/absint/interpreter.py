@@ -60,6 +60,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     # tasks and CFGs
     # =====================================================================================
     def run_task(self, task: Task) -> tuple[Value, dict, dict, bool]:
+        self.an.reached_calls[task] = set()  # what an earlier run reached no longer counts
         if task[0] == "mod":
             module = self.program.ensure(task[1])
             if module is None:  # too deeply nested to walk: reported by the program

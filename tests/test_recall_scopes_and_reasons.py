@@ -1,0 +1,388 @@
+"""Extraction mechanisms found on a fourth round of real repositories outside every test set
+(a framework's node made inside a ``@contextmanager`` scope and entered through an
+``ExitStack``, pytest fixtures yielding that scope), and ``--explain`` reasons that were wrong
+or missing there (a call in a branch that only an early, superseded run took; names left
+unknown by a budget that stopped the analysis; names built from attributes in an f-string).
+Each on a realistic multi-file workspace, with a twin where following the code must not
+invent a name or an entity."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from flake8_rosgraph.absint import engine
+from flake8_rosgraph.analysis import analyse
+from flake8_rosgraph.explain import explain
+from flake8_rosgraph.graph.builder import _entity_order
+from flake8_rosgraph.graph.model import Entity, Location
+
+from test_recall_mechanisms import entities
+from test_workspace_discovery import PACKAGE_XML, write
+
+
+def reasons(root: Path) -> dict[tuple[str, int], tuple[str, tuple[str, ...]]]:
+    """``(path, line) -> (status, reasons)`` of every creation site ``--explain`` lists."""
+    graph, analyses = analyse(root)
+    return {(e.site.path, e.site.line): (e.status, e.reasons)
+            for e in explain(analyses, graph).explanations}
+
+
+def _setup(name: str, scripts: str) -> str:
+    return f"""
+        from setuptools import find_packages, setup
+
+        setup(
+            name='{name}',
+            packages=find_packages(exclude=['test']),
+            entry_points={{'console_scripts': [{scripts}]}},
+        )
+    """
+
+
+# -- a process scope: the node is made when the scope is entered ------------------------------
+SCOPE = """
+    import contextlib
+
+    import rclpy
+    from rclpy.node import Node
+
+
+    class ProcessScope:
+        '''Owns the process's main node while it is entered.'''
+
+        def __init__(self, name='node', namespace=None):
+            self._name = name
+            self._namespace = namespace
+            self._node = None
+
+        def __enter__(self):
+            self._node = Node(self._name, namespace=self._namespace)
+            return self
+
+        def __exit__(self, *exc):
+            self._node.destroy_node()
+            self._node = None
+
+        @property
+        def node(self):
+            return self._node
+
+
+    @contextlib.contextmanager
+    def top(args=None, **kwargs):
+        rclpy.init(args=args)
+        stack = contextlib.ExitStack()
+        try:
+            yield stack.enter_context(ProcessScope(**kwargs))
+        finally:
+            stack.close()
+            rclpy.shutdown()
+
+
+    @contextlib.contextmanager
+    def remote_settings(path):
+        with open(path) as stream:
+            yield load_settings(stream)
+"""
+
+SCOPED = {
+    "scoped_apps/package.xml": PACKAGE_XML.format(name="scoped_apps", build="ament_python"),
+    "scoped_apps/setup.py": _setup("scoped_apps", "'talker = scoped_apps.talker:main', "
+                                                  "'relay = scoped_apps.relay:main'"),
+    "scoped_apps/scoped_apps/__init__.py": "",
+    "scoped_apps/scoped_apps/scope.py": SCOPE,
+    "scoped_apps/scoped_apps/talker.py": """
+        from std_msgs.msg import String
+
+        from scoped_apps import scope
+
+
+        def main():
+            with scope.top(name='talker') as process:
+                process.node.create_publisher(String, 'chatter', 10)
+    """,
+    "scoped_apps/scoped_apps/relay.py": """
+        from std_msgs.msg import String
+        from std_srvs.srv import Trigger
+
+        from scoped_apps.scope import top
+
+
+        def main():
+            with top(name='relay', namespace='bridge') as process:
+                node = process.node
+                node.create_subscription(String, 'chatter', lambda msg: None, 10)
+                node.create_service(Trigger, 'reset', lambda request, response: response)
+    """,
+    "scoped_apps/test/conftest.py": """
+        import pytest
+
+        from scoped_apps import scope
+
+
+        @pytest.fixture
+        def ros():
+            with scope.top(namespace='fixture') as top:
+                yield top
+    """,
+    "scoped_apps/test/test_reset.py": """
+        from std_srvs.srv import Trigger
+
+        from scoped_apps.scope import ProcessScope
+
+
+        def test_reset_client(ros: ProcessScope):
+            client = ros.node.create_client(Trigger, 'reset')
+            assert client.wait_for_service(timeout_sec=1.0)
+    """,
+}
+
+
+def test_a_node_made_when_a_contextmanager_scope_is_entered_gets_its_entities(
+        tmp_path: Path) -> None:
+    """``with top(...) as process`` is what the ``@contextmanager`` generator yields for that
+    call, here what ``ExitStack.enter_context`` returns (the scope's ``__enter__``, which makes
+    the node); a fixture yielding the scope from its own ``with`` hands it to the test
+    (synchros2: 91 of 120 creation sites were not in the graph)."""
+    root = write(tmp_path, SCOPED)
+    kinds = ("publishers", "subscriptions", "services", "clients")
+    assert entities(root, kinds) == {
+        "/talker": [("publishers", "/chatter")],
+        "/bridge/relay": [("services", "/bridge/reset"), ("subscriptions", "/bridge/chatter")],
+        "/fixture/node": [("clients", "/fixture/reset")],
+    }
+    assert {status for status, _ in reasons(root).values()} == {"complete"}
+
+
+def test_each_scope_call_keeps_its_own_node(tmp_path: Path) -> None:
+    """Two calls of the same ``@contextmanager`` function in one function: each ``with`` gets
+    what its own call yields, not the join of both (the relay's service is not the talker's),
+    and a generator yielding what unknown code returns gives no node at all."""
+    files = dict(SCOPED)
+    files["scoped_apps/scoped_apps/talker.py"] = """
+        from std_msgs.msg import String
+        from std_srvs.srv import Trigger
+
+        from scoped_apps import scope
+
+
+        def main():
+            with scope.top(name='talker') as first:
+                first.node.create_publisher(String, 'chatter', 10)
+            with scope.top(name='relay', namespace='bridge') as second:
+                second.node.create_service(Trigger, 'reset', lambda request, response: response)
+            with scope.remote_settings('/etc/robot.yaml') as settings:
+                settings.node.create_publisher(String, 'settings_echo', 10)
+    """
+    got = entities(write(tmp_path, files), ("publishers", "services"))
+    assert got["/talker"] == [("publishers", "/chatter")]
+    assert ("services", "/bridge/reset") in got["/bridge/relay"]
+    assert ("services", "/bridge/reset") not in got["/talker"]
+    assert all(name != "/settings_echo" for ents in got.values() for _, name in ents)
+
+
+# -- explain: a branch only a superseded run took --------------------------------------------
+LOADER = {
+    "model_loader/package.xml": PACKAGE_XML.format(name="model_loader", build="ament_python"),
+    "model_loader/setup.py": _setup("model_loader", "'loader = model_loader.loader_node:main'"),
+    "model_loader/model_loader/__init__.py": "",
+    "model_loader/model_loader/loader_config.py": """
+        ENABLE_MODEL_OPTIMIZER = False
+        OPTIMIZER_SERVICE = 'model_optimizer_pkg/model_optimizer_server'
+        VERIFY_SERVICE = 'verify_model_ready'
+    """,
+    "model_loader/model_loader/loader_node.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_srvs.srv import Trigger
+
+        from model_loader import loader_config
+
+
+        class ModelLoaderNode(Node):
+            def __init__(self):
+                super().__init__('model_loader_node')
+                if loader_config.ENABLE_MODEL_OPTIMIZER:
+                    self.optimizer = self.create_client(Trigger, loader_config.OPTIMIZER_SERVICE)
+                else:
+                    self.optimizer = None
+                self.verify = self.create_service(Trigger, loader_config.VERIFY_SERVICE,
+                                                  self.on_verify)
+
+            def on_verify(self, request, response):
+                response.success = True
+                return response
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(ModelLoaderNode())
+    """,
+}
+
+
+def test_a_call_in_a_branch_the_final_run_rules_out_is_explained_as_never_reached(
+        tmp_path: Path) -> None:
+    """The first run of the constructor reads the configuration module's flag before that
+    module ran (⊥) and evaluates both branches; the final run takes only ``else``. The client
+    is not in the graph because the line never runs, not because ``self`` is no node
+    (aws-deepracer-systems-pkg's model loader)."""
+    root = write(tmp_path, LOADER)
+    status, why = reasons(root)[("model_loader/model_loader/loader_node.py", 12)]
+    assert status == "missing"
+    assert why == ("the analysis never reaches this line (every path to it goes through a "
+                   "branch, exception or call the analysis decided cannot get here)",)
+    assert entities(root, ("services", "clients")) == {
+        "/model_loader_node": [("services", "/verify_model_ready")]}
+
+
+def test_a_call_in_a_branch_the_flag_opens_is_in_the_graph(tmp_path: Path) -> None:
+    """The twin: with the flag set, the same line is reached and its client is there."""
+    files = dict(LOADER)
+    files["model_loader/model_loader/loader_config.py"] = files[
+        "model_loader/model_loader/loader_config.py"].replace("= False", "= True")
+    root = write(tmp_path, files)
+    assert entities(root, ("services", "clients")) == {"/model_loader_node": [
+        ("clients", "/model_optimizer_pkg/model_optimizer_server"),
+        ("services", "/verify_model_ready")]}
+    assert reasons(root)[("model_loader/model_loader/loader_node.py", 12)][0] == "complete"
+
+
+# -- explain: names built from attributes, and names a stopped analysis left unknown ----------
+LIFECYCLE = {
+    "stack_composer/package.xml": PACKAGE_XML.format(name="stack_composer", build="ament_python"),
+    "stack_composer/setup.py": _setup("stack_composer", "'composer = stack_composer.composer:main'"),
+    "stack_composer/stack_composer/__init__.py": "",
+    "stack_composer/stack_composer/managed.py": """
+        import rclpy
+        from lifecycle_msgs.srv import GetState
+
+
+        class ManagedNode:
+            '''A node of a stack manifest, whose name and namespace the manifest gives.'''
+
+            def __init__(self, manifest):
+                self.name = manifest['name']
+                self.namespace = manifest.get('namespace', '')
+
+            def get_state(self):
+                probe = rclpy.create_node('get_state_probe')
+                client = probe.create_client(GetState, f'/{self.namespace}/{self.name}/get_state')
+                future = client.call_async(GetState.Request())
+                rclpy.spin_until_future_complete(probe, future, timeout_sec=3.0)
+                probe.destroy_node()
+                return future.result()
+    """,
+    "stack_composer/stack_composer/composer.py": """
+        import json
+        import sys
+
+        import rclpy
+
+        from stack_composer.managed import ManagedNode
+
+
+        def main():
+            rclpy.init()
+            with open(sys.argv[1]) as stream:
+                stack = json.load(stream)
+            for manifest in stack['nodes']:
+                print(ManagedNode(manifest).get_state())
+    """,
+}
+
+
+def test_a_name_built_from_unknown_attributes_names_them(tmp_path: Path) -> None:
+    """``f'/{self.namespace}/{self.name}/get_state'`` with both attributes read from a manifest
+    file: the reason names each attribute, instead of no reason at all (muto composer)."""
+    status, why = reasons(write(tmp_path, LIFECYCLE))[("stack_composer/stack_composer/managed.py", 14)]
+    assert status == "unknown"
+    assert why == ("unknown name", "`self.namespace` holds a value the analysis does not know here",
+                   "`self.name` holds a value the analysis does not know here")
+
+
+FLEET = """
+    import rclpy
+    from std_msgs.msg import String
+
+
+    def unit_topic(depth):
+        if depth == 0:
+            return '/fleet'
+        return unit_topic(depth - 1) + '/unit' + str(depth)
+
+
+    def on_status(msg):
+        pass
+
+
+    rclpy.init()
+    node = rclpy.create_node('fleet_monitor')
+    for topic in (unit_topic(2), unit_topic(5)):
+        node.create_subscription(String, topic, on_status, 10)
+"""
+
+
+def test_names_a_stopped_analysis_left_unknown_say_so(tmp_path: Path,
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    """When the budget of a module's entry points runs out, the tasks it abandons keep their
+    entities with every name unknown: ``--explain`` says the budget did it and where its
+    warning is, and nothing else (the node's namespace is not "left to rclpy"); with the
+    budget it needs, the same sites are complete (synchros2's action tests)."""
+    root = write(tmp_path, {"fleet_monitor.py": FLEET})
+    assert {status for status, _ in reasons(root).values()} == {"complete"}
+    monkeypatch.setattr(engine, "ENTRY_TASK_RUNS", 4)
+    got = reasons(root)
+    stopped = ("the analysis of module fleet_monitor was stopped by its budget before its values "
+               "were final, so the names it creates are unknown (see the warning at "
+               "fleet_monitor.py:5)")
+    assert got[("fleet_monitor.py", 16)] == ("unknown", ("unknown name", "unknown namespace", stopped))
+    assert got[("fleet_monitor.py", 18)] == ("unknown", ("unknown name", stopped))
+
+
+def test_a_call_a_stopped_analysis_never_reached_says_so(tmp_path: Path,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    """The budget stops ``main`` before the scope it enters has a node: the call is missing
+    because of the budget, not because ``process.node`` is no node."""
+    files = dict(SCOPED)
+    files["scoped_apps/scoped_apps/fleet.py"] = """
+        from std_msgs.msg import String
+
+        from scoped_apps.scope import top
+
+
+        def unit_topic(depth):
+            if depth == 0:
+                return '/fleet'
+            return unit_topic(depth - 1) + '/unit' + str(depth)
+
+
+        def main():
+            with top(name='fleet') as process:
+                for topic in (unit_topic(2), unit_topic(5)):
+                    process.node.create_subscription(String, topic, print, 10)
+    """
+    files["scoped_apps/setup.py"] = _setup("scoped_apps", "'fleet = scoped_apps.fleet:main'")
+    root = write(tmp_path, files)
+    assert reasons(root)[("scoped_apps/scoped_apps/fleet.py", 15)][0] == "complete"
+    monkeypatch.setattr(engine, "ENTRY_TASK_RUNS", 9)
+    status, why = reasons(root)[("scoped_apps/scoped_apps/fleet.py", 15)]
+    assert status == "missing"
+    assert why == ("the analysis of main was stopped by its budget before it reached this call "
+                   "with a node (see the warning at scoped_apps/scoped_apps/fleet.py:6)",)
+
+
+# -- entities that differ only in a name template's default -----------------------------------
+def test_entities_differing_only_in_a_template_default_sort() -> None:
+    """A parameter declared on one path and not on another (inside ``try``, or by a helper
+    only some callers run) gives two entities at one site whose name templates differ only
+    in the default, ``None`` against a text: the graph sorts them instead of the whole group
+    of modules failing with an internal error (muto agent: 0 creation sites)."""
+    where = Location("muto_agent/commands.py", 148, 26)
+    known = Entity("publishers", None, location=where, type="muto_msgs/msg/MutoAction",
+                   name_template=(("commands_to_agent_topic", "msg4"),))
+    unset = Entity("publishers", None, location=where, type="muto_msgs/msg/MutoAction",
+                   name_template=(("commands_to_agent_topic", None),))
+    assert sorted([known, unset], key=_entity_order) == [unset, known]
+    assert sorted([unset, known], key=_entity_order) == [unset, known]
