@@ -386,3 +386,102 @@ def test_entities_differing_only_in_a_template_default_sort() -> None:
                    name_template=(("commands_to_agent_topic", None),))
     assert sorted([known, unset], key=_entity_order) == [unset, known]
     assert sorted([unset, known], key=_entity_order) == [unset, known]
+
+
+# -- enum members ------------------------------------------------------------------------------
+TELEOP = {
+    "web_teleop/package.xml": PACKAGE_XML.format(name="web_teleop", build="ament_python"),
+    "web_teleop/setup.py": _setup("web_teleop", "'ik_control = web_teleop.ik_control:main'"),
+    "web_teleop/web_teleop/__init__.py": "",
+    "web_teleop/web_teleop/constants.py": """
+        from enum import Enum
+
+
+        class ControlMode(Enum):
+            '''The control modes of the driver.'''
+
+            POSITION = 'position'
+            NAVIGATION = 'navigation'
+
+            def get_service_name(self):
+                return f'switch_to_{self.value}_mode'
+
+
+        class Topics(Enum):
+            JOINT_STATES = 'joint_states'
+            ODOM = 'odom'
+
+
+        class Frame(str, Enum):
+            BASE = 'base_link'
+
+
+        GOAL_TOPIC = {ControlMode.POSITION: 'position_goal', ControlMode.NAVIGATION: 'nav_goal'}
+    """,
+    "web_teleop/web_teleop/ik_control.py": """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import JointState
+        from std_msgs.msg import String
+        from std_srvs.srv import Trigger
+
+        from web_teleop.constants import GOAL_TOPIC, ControlMode, Frame, Topics
+
+
+        class StretchIKControl(Node):
+            def __init__(self, mode=ControlMode.NAVIGATION):
+                super().__init__('stretch_ik_control')
+                navigation_mode = ControlMode.NAVIGATION
+                self.switch_client = self.create_client(Trigger, navigation_mode.get_service_name())
+                self.joints = self.create_subscription(JointState, Topics.JOINT_STATES.value,
+                                                       self.on_joints, 1)
+                for topic in Topics:
+                    self.create_publisher(String, 'echo/' + topic.name.lower(), 1)
+                self.goal = self.create_publisher(String, GOAL_TOPIC[mode], 1)
+                if mode == ControlMode.POSITION:
+                    self.create_publisher(String, 'position_markers', 1)
+                if mode in (ControlMode.NAVIGATION,):
+                    self.create_publisher(String, 'navigation_markers', 1)
+                self.frame = self.create_publisher(String, Frame.BASE + '/pose', 1)
+
+            def on_joints(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(StretchIKControl())
+    """,
+}
+
+
+def test_enum_members_have_their_value_name_and_methods(tmp_path: Path) -> None:
+    """``ControlMode.NAVIGATION.get_service_name()``, ``Topics.JOINT_STATES.value`` and
+    ``for topic in Topics: … topic.name`` follow the members (stretch_web_teleop's IK control:
+    the mode switch client had no name); a ``(str, Enum)`` member is still its string."""
+    root = write(tmp_path, TELEOP)
+    got = entities(root, ("publishers", "subscriptions", "clients"))
+    assert got == {"/stretch_ik_control": [
+        ("clients", "/switch_to_navigation_mode"),
+        ("publishers", "/base_link/pose"),
+        ("publishers", "/echo/joint_states"),
+        ("publishers", "/echo/odom"),
+        ("publishers", "/nav_goal"),
+        ("publishers", "/navigation_markers"),
+        ("subscriptions", "/joint_states")]}
+    assert {key: status for key, (status, _) in reasons(root).items() if status != "complete"} \
+        == {("web_teleop/web_teleop/ik_control.py", 21): "missing"}  # mode is NAVIGATION
+
+
+def test_enum_members_are_equal_only_to_themselves(tmp_path: Path) -> None:
+    """The twin: a table keyed by members gives the value of the member looked up, not every
+    value; ``==`` and ``in`` on members decide their branches; a pure enum's member in an
+    f-string is not its value (``str()`` is ``ControlMode.NAVIGATION``): no name at all."""
+    files = dict(TELEOP)
+    files["web_teleop/web_teleop/ik_control.py"] = TELEOP["web_teleop/web_teleop/ik_control.py"].replace(
+        "self.frame = self.create_publisher(String, Frame.BASE + '/pose', 1)",
+        "self.frame = self.create_publisher(String, f'{mode}/status', 1)")
+    got = entities(write(tmp_path, files), ("publishers",))["/stretch_ik_control"]
+    assert ("publishers", "/position_goal") not in got
+    assert ("publishers", "/position_markers") not in got
+    assert ("publishers", "/navigation/status") not in got and ("publishers", "?") in got

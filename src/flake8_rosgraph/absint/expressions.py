@@ -12,9 +12,10 @@ from typing import Callable
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
+from .enums import is_member_site
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
-                     DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
-                     join_all, joined)
+                     DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
+                     const, join_all, joined)
 
 
 class ExpressionSemantics:
@@ -138,13 +139,17 @@ class ExpressionSemantics:
                 for b in right:
                     if isinstance(a, Const) and isinstance(b, Const):
                         out.add(fn(a.value, b.value))
+                    elif isinstance(a, Obj) and isinstance(b, Obj) and is_member_site(a.site) \
+                            and is_member_site(b.site):
+                        out.add((a.site == b.site) != negate)
                     elif isinstance(a, Const) != isinstance(b, Const) and \
                             None in (getattr(a, "value", 0), getattr(b, "value", 0)):
                         out.add(negate)  # an object is never None
                     else:
                         out.update((True, False))
             return atoms(Const.of(x) for x in out)
-        if isinstance(op, (ast.In, ast.NotIn)) and left.consts() is not None and not right.is_top:
+        if isinstance(op, (ast.In, ast.NotIn)) and not right.is_top and (
+                left.consts() is not None or _member_sites(left) is not None):
             return _membership(left, right, negate=isinstance(op, ast.NotIn))
         return BOOLS
 
@@ -209,10 +214,16 @@ class ExpressionSemantics:
         if isinstance(atom, Coll):
             return atom.elem
         if isinstance(atom, DictAtom):
-            if keys is None:
+            members = _member_sites(index)
+            if keys is None and members is None:
                 return join_all(v for _, v in atom.items)
             out = BOTTOM
             for k, v in atom.items:
+                if members is not None:  # a table keyed by enum members: by identity
+                    found = _member_sites(k)
+                    if not k.is_bottom and (found is None or found & members):
+                        out = out.join(v)
+                    continue
                 kc = k.consts()
                 if kc is None or any(x in kc for x in keys):
                     out = out.join(v)
@@ -328,6 +339,9 @@ class ExpressionSemantics:
                 out = out.join(join_all(k for k, _ in atom.items))
             elif isinstance(atom, Const) and isinstance(atom.value, str):
                 out = out.join(fold(lambda s: s, [atoms([atom])]) if len(atom.value) == 1 else TOP)
+            elif isinstance(atom, ClassAtom) and self.enum_members(atom) is not None:
+                for name in self.enum_members(atom):  # ``for topic in Topics:``
+                    out = out.join(self.enum_member(atom, name))
             else:
                 return TOP
         # A collection supplied from outside (a parameter's list): its default's elements are
@@ -384,14 +398,20 @@ def _const_tuples(value: Value) -> list[tuple] | None:
 
 
 def _membership(left: Value, right: Value, negate: bool) -> Value:
-    """``left in right`` for constants in tuples/lists of known length (``msg.__module__ in
-    ('a', 'b')``): decided where every item that could match is a known constant."""
+    """``left in right`` for constants (or enum members) in tuples/lists of known length
+    (``msg.__module__ in ('a', 'b')``, ``mode in (Mode.SIM, Mode.REPLAY)``): decided where
+    every item that could match is a known constant (member)."""
+    by_identity = _member_sites(left)
     out: set[bool] = set()
     for container in right:
         if not isinstance(container, Seq):
             return BOOLS
-        items = [item.consts() for item in container.items]
-        for value in left.consts() or ():
+        if by_identity is not None:
+            items = [None if (m := _member_sites(item)) is None else sorted(m)
+                     for item in container.items]
+        else:
+            items = [item.consts() for item in container.items]
+        for value in sorted(by_identity) if by_identity is not None else left.consts() or ():
             if any(len(item) == 1 and item[0] == value for item in items if item is not None):
                 out.add(not negate)
             elif all(item is not None and value not in item for item in items):
@@ -400,3 +420,10 @@ def _membership(left: Value, right: Value, negate: bool) -> Value:
                 out.update((True, False))
     return atoms(Const.of(x) for x in out) if out else BOOLS
 
+
+def _member_sites(value: Value) -> frozenset[str] | None:
+    """The enum members ``value`` may be (their sites), ``None`` unless it is only members."""
+    if value.is_top or value.is_bottom or not all(
+            isinstance(a, Obj) and is_member_site(a.site) for a in value):
+        return None
+    return frozenset(a.site for a in value)
