@@ -485,3 +485,81 @@ def test_enum_members_are_equal_only_to_themselves(tmp_path: Path) -> None:
     assert ("publishers", "/position_goal") not in got
     assert ("publishers", "/position_markers") not in got
     assert ("publishers", "/navigation/status") not in got and ("publishers", "?") in got
+
+
+# -- len() of a list the caller wrote ----------------------------------------------------------
+HAL = {
+    "hal_interfaces/package.xml": PACKAGE_XML.format(name="hal_interfaces", build="ament_python"),
+    "hal_interfaces/setup.py": _setup("hal_interfaces", "'vacuum_hal = hal_interfaces.hal:main'"),
+    "hal_interfaces/hal_interfaces/__init__.py": "",
+    "hal_interfaces/hal_interfaces/bumper.py": """
+        from gazebo_msgs.msg import ContactsState
+        from rclpy.node import Node
+
+
+        class BumperNode(Node):
+            def __init__(self, topics):
+                super().__init__('bumper_node')
+                self.topics = topics
+                self.callbacks_ = [self.right_callback, self.center_callback, self.left_callback]
+                for i in range(len(self.topics)):
+                    self.sub = self.create_subscription(
+                        ContactsState, topics[i], self.callbacks_[i], 10)
+                self.contact_states_ = [ContactsState() for _ in range(3)]
+
+            def right_callback(self, contact):
+                self.contact_states_[0] = contact
+
+            def center_callback(self, contact):
+                self.contact_states_[1] = contact
+
+            def left_callback(self, contact):
+                self.contact_states_[2] = contact
+    """,
+    "hal_interfaces/hal_interfaces/hal.py": """
+        import rclpy
+
+        from hal_interfaces.bumper import BumperNode
+
+
+        def main():
+            rclpy.init()
+            bumper_node = BumperNode([
+                '/roombaROS/events/right_bumper',
+                '/roombaROS/events/center_bumper',
+                '/roombaROS/events/left_bumper',
+            ])
+            rclpy.spin(bumper_node)
+    """,
+}
+
+
+def test_an_index_loop_over_a_written_list_follows_its_items(tmp_path: Path) -> None:
+    """``for i in range(len(self.topics))`` over the list the caller wrote: ``len`` is known,
+    so ``topics[i]`` is each of its items (RoboticsAcademy's bumper HAL)."""
+    root = write(tmp_path, HAL)
+    assert entities(root, ("subscriptions",)) == {"/bumper_node": [
+        ("subscriptions", "/roombaROS/events/center_bumper"),
+        ("subscriptions", "/roombaROS/events/left_bumper"),
+        ("subscriptions", "/roombaROS/events/right_bumper")]}
+
+
+def test_the_length_of_a_list_unseen_code_fills_stays_unknown(tmp_path: Path) -> None:
+    """The twin: the list starts empty and a library the analysis does not see fills it, so
+    its length decides nothing: the loop is not dead and invents no name."""
+    files = dict(HAL)
+    files["hal_interfaces/hal_interfaces/hal.py"] = """
+        import rclpy
+        from roomba_config import load_bumper_topics
+
+        from hal_interfaces.bumper import BumperNode
+
+
+        def main():
+            rclpy.init()
+            topics = []
+            load_bumper_topics(topics)
+            rclpy.spin(BumperNode(topics))
+    """
+    assert entities(write(tmp_path, files), ("subscriptions",)) == {
+        "/bumper_node": [("subscriptions", "?")]}

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Iterator
 
 from .callgraph import CallSite
+from .containers import may_be_filled_elsewhere
 from .engine import Effect
 from .fixtures import is_test_class, test_class_calls
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
@@ -660,8 +661,8 @@ class CallSemantics:
                 return const("")
             if pos and all(v.consts() is not None for v in pos):
                 return fold(PURE_BUILTINS[name], list(pos))
-            if name == "len":
-                return TOP
+            if name == "len" and len(pos) == 1:
+                return _known_length(pos[0])
             return TOP
         if name == "range" and pos and all(v.consts() is not None for v in pos):
             out = fold(lambda *a: tuple(range(*a)) if len(range(*a)) <= MAX_ATOMS else _raise(),
@@ -761,6 +762,21 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _known_length(value: Value) -> Value:
+    """``len(value)`` where every possibility has a known length: a sequence or dict whose
+    items are listed (``for i in range(len(self.topics))`` over a list the caller wrote);
+    not an empty list or dict, which unseen code may fill (as its truth decides nothing)."""
+    if value.is_top or value.is_bottom:
+        return TOP
+    lengths = []
+    for atom in value:
+        if isinstance(atom, (Seq, DictAtom)) and not may_be_filled_elsewhere(atom):
+            lengths.append(len(atom.items))
+        else:
+            return TOP
+    return atoms(Const.of(n) for n in sorted(set(lengths)))
 
 
 def _has_shape(model: FunctionModel, spec: StandIn, args: "Args") -> bool:
