@@ -563,3 +563,115 @@ def test_the_length_of_a_list_unseen_code_fills_stays_unknown(tmp_path: Path) ->
     """
     assert entities(write(tmp_path, files), ("subscriptions",)) == {
         "/bumper_node": [("subscriptions", "?")]}
+
+
+# -- loops over written-out tables -----------------------------------------------------------
+AI_SERVER = {
+    "ai_server/package.xml": PACKAGE_XML.format(name="ai_server", build="ament_python"),
+    "ai_server/setup.py": _setup("ai_server", "'ai_server = ai_server.server:main'"),
+    "ai_server/ai_server/__init__.py": "",
+    "ai_server/ai_server/topics.py": """
+        from std_msgs.msg import Bool, String
+
+        STATUS_TOPICS = [('status', String), ('enabled', Bool)]
+    """,
+    "ai_server/ai_server/server.py": """
+        import rclpy
+        from example_interfaces.action import Fibonacci
+        from rclpy.action import ActionServer
+        from rclpy.node import Node
+        from std_srvs.srv import Empty, SetBool, Trigger
+
+        from ai_server.topics import STATUS_TOPICS
+
+
+        class AIServer(Node):
+            def __init__(self):
+                super().__init__('physical_ai_server')
+                service_definitions = [
+                    ('/task/command', Trigger, self.on_command),
+                    ('/set_robot_type', SetBool, self.on_robot_type),
+                    ('/training/command', Trigger, self.on_command),
+                    ('/training/get_user_list', Empty, self.on_user_list),
+                    ('/training/get_dataset_list', Empty, self.on_user_list),
+                    ('/training/get_model_weight_list', Empty, self.on_user_list),
+                    ('/huggingface/control', SetBool, self.on_robot_type),
+                    ('/get_policy_list', Empty, self.on_user_list),
+                    ('/get_saved_policies', Empty, self.on_user_list),
+                    ('/register_hf_user', SetBool, self.on_robot_type),
+                    ('/get_registered_hf_user', Empty, self.on_user_list),
+                    ('/get_robot_types', Empty, self.on_user_list),
+                    ('/training/get_training_info', Trigger, self.on_command),
+                ]
+                for service_name, service_type, callback in service_definitions:
+                    self.create_service(service_type, service_name, callback)
+                for name, msg_type in STATUS_TOPICS:
+                    self.create_publisher(msg_type, '~/' + name, 10)
+                for action, execute in {'replay': self.on_replay}.items():
+                    ActionServer(self, Fibonacci, action, execute)
+
+            def on_command(self, request, response):
+                return response
+
+            def on_robot_type(self, request, response):
+                return response
+
+            def on_user_list(self, request, response):
+                return response
+
+            def on_replay(self, goal_handle):
+                return Fibonacci.Result()
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(AIServer())
+    """,
+}
+
+
+def _typed(root: Path) -> list[tuple[str, str, str | None, str | None]]:
+    return sorted((e.kind, e.name or "?", e.type, e.callback) for node in analyse(root)[0].nodes
+                  for e in node.entities if e.kind in ("services", "publishers", "action_servers"))
+
+
+def test_a_loop_over_a_table_creates_each_row_with_its_own_type(tmp_path: Path) -> None:
+    """``for service_name, service_type, callback in service_definitions`` over thirteen
+    written-out rows: each service has its own name, type and callback (physical_ai_tools'
+    server: one service of unknown name before, the table being longer than a value holds);
+    the same for a module's topic table and a dict's items."""
+    root = write(tmp_path, AI_SERVER)
+    got = _typed(root)
+    assert len([g for g in got if g[0] == "services"]) == 13
+    assert ("services", "/set_robot_type", "std_srvs/srv/SetBool", "AIServer.on_robot_type") in got
+    assert ("services", "/get_robot_types", "std_srvs/srv/Empty", "AIServer.on_user_list") in got
+    assert ("services", "/training/command", "std_srvs/srv/Trigger", "AIServer.on_command") in got
+    assert ("publishers", "/physical_ai_server/enabled", "std_msgs/msg/Bool", None) in got
+    assert ("publishers", "/physical_ai_server/status", "std_msgs/msg/String", None) in got
+    assert ("action_servers", "/replay", "example_interfaces/action/Fibonacci",
+            "AIServer.on_replay") in got
+    assert {status for status, _ in reasons(root).values()} == {"complete"}
+
+
+def test_a_table_handed_to_a_workspace_helper_is_not_paired_by_guess(tmp_path: Path) -> None:
+    """The twin: the row goes through the workspace's own helper, which is not split per row
+    (each row would be a calling context of its own); and a loop variable reassigned from
+    something unknown is no longer the row's. Neither pairs a name with another row's type:
+    thirteen names are more than a value holds, so each type comes with an unknown name."""
+    files = dict(AI_SERVER)
+    server = AI_SERVER["ai_server/ai_server/server.py"]
+    files["ai_server/ai_server/server.py"] = server.replace(
+        "                    self.create_service(service_type, service_name, callback)",
+        "                    add_service(self, service_type, service_name, callback)").replace(
+        "                    self.create_publisher(msg_type, '~/' + name, 10)",
+        "                    name = self.topic_prefix() + name\n"
+        "                    self.create_publisher(msg_type, name, 10)") + """
+
+        def add_service(node, service_type, name, callback):
+            return node.create_service(service_type, name, callback)
+    """
+    got = _typed(write(tmp_path, files))
+    services = [g for g in got if g[0] == "services"]
+    assert services and {name for _, name, _, _ in services} == {"?"}
+    assert [g for g in got if g[0] == "publishers"] == [
+        ("publishers", "?", "std_msgs/msg/Bool", None), ("publishers", "?", "std_msgs/msg/String", None)]

@@ -534,7 +534,7 @@ class CallSemantics:
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args
                           if ref.how == "arg" and ref.data in written)
-            key = (id(node), model.qualname, index, receiver)
+            key = (id(node), model.qualname, index, receiver, frame.row)
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,

@@ -13,6 +13,7 @@ from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
+from .rows import LoopRows
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
                      const, join_all, joined)
@@ -198,6 +199,54 @@ class ExpressionSemantics:
             out = out.join(self._subscript(atom, index))
         return out
 
+    def _call_per_row(self, node: ast.Call) -> Value | None:
+        """A creation call in the body of a loop over a written-out table, evaluated once per
+        row with the loop variables its arguments read bound to that row's values, so that
+        each entity gets its own name, type and callback (:mod:`.rows`); ``None`` when the
+        call is not one (evaluated once, as usual)."""
+        frame = self.frame
+        arguments = [*node.args, *(kw.value for kw in node.keywords)]
+        if not arguments or not all(self._pure_test(arg) for arg in arguments):
+            return None
+        read = {n.id for arg in arguments for n in ast.walk(arg) if isinstance(n, ast.Name)}
+        best: tuple[int, LoopRows] | None = None
+        for loop, table in frame.loop_rows.items():
+            used = read.intersection(table.names)
+            if used and all(frame.env.get(n) is v for n, v in zip(table.names, table.bound)) \
+                    and (best is None or len(used) > len(read.intersection(best[1].names))):
+                best = (loop, table)
+        if best is None or not self._creates(self.eval(node.func)):
+            return None
+        loop, table = best
+        saved = {name: frame.env[name] for name in table.names}
+        out = BOTTOM
+        try:
+            for index, row in enumerate(table.rows):
+                frame.env.update(zip(table.names, row))
+                frame.row = (loop, index)
+                out = out.join(self.e_Call(node))
+        finally:
+            frame.env.update(saved)
+            frame.row = None
+        return out
+
+    def _creates(self, func: Value) -> bool:
+        """Whether calling ``func`` runs a library model with effects (``create_service``, an
+        ``ActionServer``): only those are split per row, not the workspace's own functions
+        (each row would be a calling context of its own)."""
+        if func.is_top or func.is_bottom:
+            return False
+        for atom in func:
+            qualname = atom.qualname if isinstance(atom, (Extern, ExternBound)) else None
+            if qualname is None:
+                return False
+            owner, _, method = qualname.rpartition(".")
+            model = self.lib.functions.get(qualname) or self.lib.method(owner, method) \
+                or self.lib.method(qualname, "__init__")
+            if model is None or not model.effects:
+                return False
+        return True
+
     def _subscript(self, atom: Atom, index: Value) -> Value:
         keys = index.consts()
         if isinstance(atom, Seq) and keys is not None:
@@ -285,6 +334,10 @@ class ExpressionSemantics:
     e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
 
     def e_Call(self, node: ast.Call) -> Value:
+        if self.frame.loop_rows and self.frame.row is None:
+            per_row = self._call_per_row(node)
+            if per_row is not None:
+                return per_row
         self.an.reached_calls.setdefault(self.frame.task, set()).add(
             (self.frame.module.path, node.lineno, node.col_offset))
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
