@@ -675,3 +675,59 @@ def test_a_table_handed_to_a_workspace_helper_is_not_paired_by_guess(tmp_path: P
     assert services and {name for _, name, _, _ in services} == {"?"}
     assert [g for g in got if g[0] == "publishers"] == [
         ("publishers", "?", "std_msgs/msg/Bool", None), ("publishers", "?", "std_msgs/msg/String", None)]
+
+
+def test_rows_from_zip_enumerate_and_comprehensions_stay_paired(tmp_path: Path) -> None:
+    """``zip`` of two written-out lists and ``enumerate`` of one give rows of known items, and
+    a comprehension over a table is split per row like a loop: each publisher keeps its own
+    type; a ``zip`` with a list that unseen code fills keeps its names unknown."""
+    files = dict(AI_SERVER)
+    files["ai_server/ai_server/arms.py"] = """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import JointState
+        from std_msgs.msg import Float64MultiArray
+
+        from ai_server.topics import STATUS_TOPICS
+
+
+        class ArmBridge(Node):
+            def __init__(self):
+                super().__init__('arm_bridge')
+                arms = ['leader', 'follower']
+                kinds = [JointState, Float64MultiArray]
+                for arm, kind in zip(arms, kinds):
+                    self.create_subscription(kind, arm + '/joint_states', self.on_joints, 10)
+                for index, arm in enumerate(arms, 1):
+                    self.create_publisher(JointState, f'arm{index}/{arm}/command', 10)
+                self.status = {name: self.create_publisher(msg_type, 'bridge/' + name, 10)
+                               for name, msg_type in STATUS_TOPICS}
+                extra = []
+                load_extra_arms(extra)
+                for arm, kind in zip(extra, kinds):
+                    self.create_subscription(kind, arm + '/extra', self.on_joints, 10)
+
+            def on_joints(self, msg):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(ArmBridge())
+    """
+    files["ai_server/setup.py"] = _setup("ai_server", "'ai_server = ai_server.server:main', "
+                                                      "'arms = ai_server.arms:main'")
+    root = write(tmp_path, files)
+    got = sorted((e.kind, e.name or "?", e.type) for node in analyse(root)[0].nodes
+                 if node.name == "arm_bridge" for e in node.entities
+                 if e.kind in ("publishers", "subscriptions"))
+    assert got == [
+        ("publishers", "/arm1/leader/command", "sensor_msgs/msg/JointState"),
+        ("publishers", "/arm2/follower/command", "sensor_msgs/msg/JointState"),
+        ("publishers", "/bridge/enabled", "std_msgs/msg/Bool"),
+        ("publishers", "/bridge/status", "std_msgs/msg/String"),
+        ("subscriptions", "/follower/joint_states", "std_msgs/msg/Float64MultiArray"),
+        ("subscriptions", "/leader/joint_states", "sensor_msgs/msg/JointState"),
+        ("subscriptions", "?", "sensor_msgs/msg/JointState"),
+        ("subscriptions", "?", "std_msgs/msg/Float64MultiArray"),
+    ]

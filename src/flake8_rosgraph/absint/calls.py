@@ -677,8 +677,18 @@ class CallSemantics:
                     return atoms(Seq(name, a.items) for a in seqs)
             return atoms([Coll(name, self.iter_elem(pos[0]))])
         if name == "enumerate" and pos:
+            start = pos[1] if len(pos) > 1 else args.kw.get("start", const(0))
+            items = _listed(pos[0])
+            if items is not None and len(start.consts() or ()) == 1 and \
+                    isinstance(start.consts()[0], int) and len(pos) <= 2:
+                first = start.consts()[0]
+                return atoms([Seq("list", tuple(atoms([Seq("tuple", (const(first + i), item))])
+                                                for i, item in enumerate(items)))])
             return atoms([Coll("list", atoms([Seq("tuple", (TOP, self.iter_elem(pos[0])))]))])
         if name == "zip" and pos:
+            columns = [_listed(p) for p in pos]
+            if not args.kw and all(c is not None for c in columns):
+                return atoms([Seq("list", tuple(atoms([Seq("tuple", row)]) for row in zip(*columns)))])
             return atoms([Coll("list", atoms([Seq("tuple", tuple(self.iter_elem(p) for p in pos))]))])
         if name == "dict":
             if args.kw and not pos:
@@ -762,6 +772,17 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _listed(value: Value) -> tuple[Value, ...] | None:
+    """The items of ``value`` when it is one sequence whose items are listed (and not an
+    empty list that unseen code may fill): what ``zip``/``enumerate`` pair row by row."""
+    if value.is_top or value.is_bottom or len(value.atoms) != 1:
+        return None
+    [atom] = value.atoms
+    if not isinstance(atom, Seq) or may_be_filled_elsewhere(atom):
+        return None
+    return atom.items
 
 
 def _known_length(value: Value) -> Value:

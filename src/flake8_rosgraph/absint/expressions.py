@@ -13,7 +13,7 @@ from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
-from .rows import LoopRows
+from .rows import LoopRows, rows_of
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
                      const, join_all, joined)
@@ -212,23 +212,33 @@ class ExpressionSemantics:
         best: tuple[int, LoopRows] | None = None
         for loop, table in frame.loop_rows.items():
             used = read.intersection(table.names)
-            if used and all(frame.env.get(n) is v for n, v in zip(table.names, table.bound)) \
+            if used and all(self._holder(n).get(n) is v for n, v in zip(table.names, table.bound)) \
                     and (best is None or len(used) > len(read.intersection(best[1].names))):
                 best = (loop, table)
         if best is None or not self._creates(self.eval(node.func)):
             return None
         loop, table = best
-        saved = {name: frame.env[name] for name in table.names}
+        holders = [self._holder(name) for name in table.names]
+        saved = [holder[name] for holder, name in zip(holders, table.names)]
         out = BOTTOM
         try:
             for index, row in enumerate(table.rows):
-                frame.env.update(zip(table.names, row))
+                for holder, name, value in zip(holders, table.names, row):
+                    holder[name] = value
                 frame.row = (loop, index)
                 out = out.join(self.e_Call(node))
         finally:
-            frame.env.update(saved)
+            for holder, name, value in zip(holders, table.names, saved):
+                holder[name] = value
             frame.row = None
         return out
+
+    def _holder(self, name: str) -> dict[str, Value]:
+        """Where ``name`` lives here: the innermost comprehension binding it, else the frame."""
+        for overlay in reversed(self.frame.comp):
+            if name in overlay:
+                return overlay
+        return self.frame.env
 
     def _creates(self, func: Value) -> bool:
         """Whether calling ``func`` runs a library model with effects (``create_service``, an
@@ -313,11 +323,16 @@ class ExpressionSemantics:
         self.frame.comp.append(overlay)
         try:
             for gen in node.generators:
-                elem = self.iter_elem(self.eval(gen.iter))
+                iterable = self.eval(gen.iter)
+                elem = self.iter_elem(iterable)
                 for name_node in ast.walk(gen.target):
                     if isinstance(name_node, ast.Name):
                         overlay[name_node.id] = TOP
                 self.assign(gen.target, elem)
+                found = rows_of(gen.target, iterable)
+                if found is not None:  # ``{n: node.create_publisher(t, n, 10) for n, t in TABLE}``
+                    self.frame.loop_rows[id(gen)] = LoopRows(
+                        found[0], tuple(overlay[n] for n in found[0]), found[1])
                 for cond in gen.ifs:
                     self.eval(cond)
             if isinstance(node, ast.DictComp):
@@ -327,6 +342,8 @@ class ExpressionSemantics:
                 elem = self.eval(node.elt)
         finally:
             self.frame.comp.pop()
+            for gen in node.generators:
+                self.frame.loop_rows.pop(id(gen), None)
         kind = {ast.ListComp: "list", ast.SetComp: "set", ast.DictComp: "dict"}.get(
             type(node), "gen")
         return atoms([Coll(kind, elem)])
