@@ -731,3 +731,64 @@ def test_rows_from_zip_enumerate_and_comprehensions_stay_paired(tmp_path: Path) 
         ("subscriptions", "?", "sensor_msgs/msg/JointState"),
         ("subscriptions", "?", "std_msgs/msg/Float64MultiArray"),
     ]
+
+
+# -- property setters --------------------------------------------------------------------------
+SETTERS = {
+    "scope_setters/package.xml": PACKAGE_XML.format(name="scope_setters", build="ament_python"),
+    "scope_setters/setup.py": _setup("scope_setters", "'relay = scope_setters.relay:main'"),
+    "scope_setters/scope_setters/__init__.py": "",
+    "scope_setters/scope_setters/scope.py": """
+        class Scope:
+            '''Holds the process's main node once one is promoted to it.'''
+
+            def __init__(self):
+                self._node = None
+                self._prefix = '/robot'
+
+            @property
+            def node(self):
+                return self._node
+
+            @node.setter
+            def node(self, node):
+                if self._node is not None:
+                    raise RuntimeError('main node already set')
+                self._node = node
+
+            @property
+            def topic_prefix(self):
+                return self._prefix
+
+            @topic_prefix.setter
+            def topic_prefix(self, robot_name):
+                self._prefix = '/' + robot_name
+    """,
+    "scope_setters/scope_setters/relay.py": """
+        import rclpy
+        from rclpy.node import Node
+        from std_msgs.msg import String
+
+        from scope_setters.scope import Scope
+
+
+        def main():
+            rclpy.init()
+            scope = Scope()
+            scope.node = Node('relay')
+            scope.topic_prefix = 'rover'
+            scope.node.create_publisher(String, scope.topic_prefix + '/chatter', 10)
+            rclpy.spin(scope.node)
+    """,
+}
+
+
+def test_assigning_a_property_runs_its_setter(tmp_path: Path) -> None:
+    """``scope.node = Node('relay')`` runs the ``node`` setter, which keeps the node where
+    the getter reads it; ``scope.topic_prefix = 'rover'`` stores ``'/rover'``, not
+    ``'rover'``: the publisher is never named from the assigned text itself (a confident wrong
+    name before), and the setter is never what reading the property gives."""
+    got = entities(write(tmp_path, SETTERS), ("publishers",))
+    assert ("publishers", "/rover/chatter") in got["/relay"]
+    assert ("publishers", "/chatter") not in got["/relay"]
+    assert ("publishers", "rover/chatter") not in got["/relay"]

@@ -254,7 +254,10 @@ class ObjectSemantics:
         out = []
         for atom in value:
             if isinstance(atom, FuncAtom):
-                kind = self.program.functions[atom.fid].kind
+                func = self.program.functions[atom.fid]
+                kind = func.kind
+                if func.setter:
+                    continue  # the property's getter gives what reading the attribute does
                 if kind == "staticmethod":
                     out.append(atom)
                 elif kind == "classmethod":
@@ -274,11 +277,29 @@ class ObjectSemantics:
     def store_attr(self, target: Value, attr: str, value: Value) -> None:
         for atom in target:
             if isinstance(atom, Obj):
+                setters = self._setters(atom, attr)
+                if setters:  # ``scope.executor = executor`` runs the property's setter
+                    for fid in setters:
+                        self.call(atoms([BoundMethod(atom, fid)]), Args([value], {}, False), None)
+                    continue
                 self.an.write(("a", atom.site, attr), value)
             elif isinstance(atom, ClassAtom):
                 self.an.write(("k", atom.cid, attr), value)
             elif isinstance(atom, ModuleAtom):
                 self.an.write(("g", atom.name, attr), value)
+
+    def _setters(self, obj: Obj, attr: str) -> list[int]:
+        """The property setters ``obj.<attr> = …`` runs: those of the first workspace class
+        along the MRO that binds ``attr``."""
+        for cls in self.mro(obj.cls):
+            if not isinstance(cls, ClassAtom):
+                continue
+            bound = self.an.read(("k", cls.cid, attr), self.frame.task)
+            if bound.is_bottom:
+                continue
+            return [a.fid for a in bound if isinstance(a, FuncAtom) and self.program.functions[a.fid].setter] \
+                if not bound.is_top else []
+        return []
 
     # -- classes ----------------------------------------------------------------------------
     def user_bases(self, cid: int) -> list[int]:

@@ -79,6 +79,9 @@ class Function:
     #: Decorated with ``contextlib.contextmanager`` (or its async twin): a call makes a
     #: context manager whose ``__enter__`` hands out what the generator yields.
     context_manager: bool = False
+    #: Decorated with ``@<name>.setter``: Python calls it for ``obj.<name> = value`` (the
+    #: property of that name), and reading ``obj.<name>`` never gives it.
+    setter: bool = False
     _cfg: CFG | None = None
 
     @property
@@ -344,6 +347,8 @@ class Program:
                 if not lam:
                     func.kind = _decorator_kind(node)
                     func.context_manager = _is_context_manager(node)
+                    func.setter = any(isinstance(d, ast.Attribute) and d.attr == "setter"
+                                      for d in node.decorator_list)
                     if cid is not None:
                         self.classes[cid].methods.setdefault(name, func.fid)
                 self.functions.append(func)
