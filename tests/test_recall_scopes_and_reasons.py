@@ -792,3 +792,43 @@ def test_assigning_a_property_runs_its_setter(tmp_path: Path) -> None:
     assert ("publishers", "/rover/chatter") in got["/relay"]
     assert ("publishers", "/chatter") not in got["/relay"]
     assert ("publishers", "rover/chatter") not in got["/relay"]
+
+
+def test_a_parameter_with_a_default_on_some_paths_says_so(tmp_path: Path) -> None:
+    """The topic parameter is declared with a default on one branch and without one on the
+    other: the name is known only partly, and the reason says the default is missing on some
+    paths, not everywhere (muto agent's commands node)."""
+    files = {
+        "agent_commands/package.xml": PACKAGE_XML.format(name="agent_commands", build="ament_python"),
+        "agent_commands/setup.py": _setup("agent_commands", "'commands = agent_commands.commands:main'"),
+        "agent_commands/agent_commands/__init__.py": "",
+        "agent_commands/agent_commands/commands.py": """
+            import sys
+
+            import rclpy
+            from rclpy.node import Node
+            from std_msgs.msg import String
+
+
+            class CommandsNode(Node):
+                def __init__(self, use_defaults):
+                    super().__init__('commands')
+                    if use_defaults:
+                        self.declare_parameter('commands_to_agent_topic', 'msg4')
+                    else:
+                        self.declare_parameter('commands_to_agent_topic')
+                    topic = self.get_parameter('commands_to_agent_topic').value
+                    self.pub = self.create_publisher(String, topic, 10)
+
+
+            def main():
+                rclpy.init()
+                rclpy.spin(CommandsNode('--defaults' in sys.argv))
+        """,
+    }
+    status, why = reasons(write(tmp_path, files))[("agent_commands/agent_commands/commands.py", 16)]
+    assert status == "unknown"
+    assert why[0].startswith("unknown name (known only partly: '/msg4' on some paths")
+    assert why[1] == ("it is built from ROS parameter 'commands_to_agent_topic' of its node, without "
+                      "a default in code on some paths; where a launch file sets them, "
+                      "`graph --launch FILE` shows the name")
