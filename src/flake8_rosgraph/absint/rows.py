@@ -48,9 +48,11 @@ def target_names(target: ast.AST) -> tuple[str, ...] | None:
 def rows_of(target: ast.AST, iterable: Value) -> tuple[tuple[str, ...], tuple[tuple[Value, ...], ...]] | None:
     """The variables ``target`` binds and the rows ``iterable`` gives them, when every
     possibility of ``iterable`` is a sequence of known items and every item unpacks into
-    the target (a tuple of its length when the target is a tuple); ``None`` otherwise."""
+    the target (a tuple of its length when the target is a tuple); ``None`` otherwise, and
+    for a collection supplied from outside (a list parameter), whose written default lists
+    only some of the rows a run may have."""
     names = target_names(target)
-    if names is None or iterable.is_top or iterable.is_bottom:
+    if names is None or iterable.is_top or iterable.is_bottom or iterable.origin is not None:
         return None
     rows: list[tuple[Value, ...]] = []
     for table in iterable:
