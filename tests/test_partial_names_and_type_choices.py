@@ -226,11 +226,12 @@ RELAY = {
 
 def test_a_name_to_type_table_does_not_pair_every_name_with_every_type(tmp_path: Path) -> None:
     """Iterating ``{name: type}`` gives the loop body every name and every type at once:
-    pairing them would invent ``/relayed/odom`` as a LaserScan. The names stay, the type
-    stays unknown — unless the table has a single type."""
+    pairing them all would invent ``/relayed/odom`` as a LaserScan. The creation call runs
+    once per row of the written-out table instead, each name with its own type (see
+    test_recall_scopes_and_reasons.py for tables the rows cannot be followed through)."""
     root = write(tmp_path, RELAY)
     assert endpoints(root) == {"/relay": [
-        (12, "/relayed/front/scan", "?", ""), (12, "/relayed/odom", "?", "")]}
+        (12, "/relayed/front/scan", "LaserScan", ""), (12, "/relayed/odom", "Odometry", "")]}
     assert endpoints(root, "subscriptions") == {"/relay": [
         (14, "/front/scan", "LaserScan", ""), (14, "/rear/scan", "LaserScan", "")]}
 

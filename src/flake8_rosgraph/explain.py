@@ -131,6 +131,16 @@ class _Explainer:
             if eff.kind in CREATION_KINDS and not switched_off(eff):
                 self.effects.setdefault((eff.path, eff.line, eff.column), []).append(eff)
         self.wrappers = _workspace_only_calls(analysis)
+        self.reached = frozenset().union(*analysis.reached_calls.values())
+        #: Sites whose effects come from a task the budget abandoned (their names are made
+        #: unknown), with the functions (or module top levels) those tasks ran.
+        self.abandoned: dict[tuple[str, int, int], set[str]] = {}
+        self.abandoned_functions = {task[1] for task in analysis.abandoned if task[0] == "fn"}
+        for task in analysis.abandoned:
+            for eff in analysis.effects.get(task, {}).values():
+                self.abandoned.setdefault((eff.path, eff.line, eff.column), set()).add(
+                    self.program.functions[task[1]].qualname if task[0] == "fn"
+                    else f"module {task[1]}")
         self.graph_nodes: dict[tuple, list] = {}
         self.graph_entities: dict[tuple, list] = {}
         for node in graph.nodes:
@@ -243,6 +253,9 @@ class _Explainer:
         if not unknowns:
             return Explanation(site, "complete", ())
         reasons = list(unknowns)
+        stopped = self._stopped_reason(key)
+        if stopped:  # every constant of the effect was made unknown: no other reason holds
+            return Explanation(site, "unknown", (*unknowns, stopped))
         for unknown in unknowns:
             field = unknown.removeprefix("unknown ").split(" ")[0]
             if field == "node":
@@ -290,10 +303,13 @@ class _Explainer:
 
     def _parameter_reasons(self, key: tuple) -> list[str]:
         """Unknown names that are a parameter of their node without a default in code."""
-        parameters = sorted({e.name_parameters for _, e in self.graph_entities.get(key, [])
+        found = self.graph_entities.get(key, [])
+        parameters = sorted({e.name_parameters for _, e in found
                              if e.name is None and e.name_parameters})
+        # Known on some paths (declared with a default inside ``try``): not on all of them.
+        where = " on some paths" if any(e.partial for _, e in found) else ""
         return [f"it is built from ROS {_plural(len(p), 'parameter')} "
-                f"{', '.join(repr(n) for n in p)} of its node, without a default in code; "
+                f"{', '.join(repr(n) for n in p)} of its node, without a default in code{where}; "
                 "where a launch file sets them, `graph --launch FILE` shows the name"
                 for p in parameters]
 
@@ -311,7 +327,9 @@ class _Explainer:
         budget = self._budget_hit(module, scope)
         if budget:
             return [budget]
-        if where not in self.an.reached_calls:
+        if func is not None and func.fid in self.abandoned_functions:
+            return [self._stopped(func.qualname, "before it reached this call with a node")]
+        if where not in self.reached:
             unset = self._unset_fixtures(func) if func is not None else []
             if unset:
                 return [f"pytest runs {func.qualname} with {_plural(len(unset), 'fixture')} "
@@ -397,6 +415,20 @@ class _Explainer:
                 return "budget hit: " + diag.message
         return None
 
+    def _stopped_reason(self, key: tuple) -> str | None:
+        """The budget stopped the analysis of the code that made the site's entity before its
+        values were final: the graph keeps the entity with its names unknown."""
+        ran = self.abandoned.get(key)
+        if not ran:
+            return None
+        return self._stopped(_some_code(ran), "before its values were final, so the names it "
+                                              "creates are unknown")
+
+    def _stopped(self, code: str, what: str) -> str:
+        where = sorted({f"{d.path}:{d.line}" for d in self.an.diagnostics if " stopped: " in d.message})
+        return (f"the analysis of {code} was stopped by its budget {what}"
+                + (f" (see the warning at {', '.join(where)})" if where else ""))
+
     def _function_of(self, scope: ast.AST | None) -> Function | None:
         if scope is None:
             return None
@@ -466,8 +498,9 @@ class _Explainer:
             else:
                 out.append(f"it is built from `{_short(sub)}`, whose result is not known "
                            "statically")
-        if not out and isinstance(expr, ast.Attribute):
-            out.append(f"`{_short(expr)}` holds a value the analysis does not know here")
+        if not out:  # attributes only (``f"/{self.namespace}/{self.name}/get_state"``)
+            out.extend(f"`{_short(attr)}` holds a value the analysis does not know here"
+                       for attr in _outer_attributes(expr))
         return list(dict.fromkeys(out))
 
 
@@ -508,6 +541,27 @@ def _some(names: set[str]) -> str:
     more = len(names) - len(first)
     text += f" (+{more} more)" if more else ""
     return text + (" is" if len(names) == 1 else " are")
+
+
+def _outer_attributes(expr: ast.expr) -> list[ast.Attribute]:
+    """The attribute reads that make up ``expr`` (``self.a`` and ``self.b.c`` in an f-string or
+    a sum), outermost first, not those inside another attribute read or a call."""
+    out: list[ast.Attribute] = []
+    todo: list[ast.AST] = [expr]
+    while todo:
+        node = todo.pop(0)
+        if isinstance(node, ast.Attribute):
+            out.append(node)
+        elif not isinstance(node, (ast.Call, ast.Lambda)):
+            todo.extend(ast.iter_child_nodes(node))
+    return out
+
+
+def _some_code(names: set[str]) -> str:
+    """``f`` or ``f``, ``g`` (+N more): the functions or module top levels named."""
+    shown = sorted(names)
+    text = ", ".join(shown[:2])
+    return text + (f" (+{len(shown) - 2} more)" if len(shown) > 2 else "")
 
 
 def _dotted(expr: ast.AST) -> str | None:

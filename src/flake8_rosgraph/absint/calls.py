@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Iterator
 
 from .callgraph import CallSite
+from .containers import may_be_filled_elsewhere
 from .engine import Effect
 from .fixtures import is_test_class, test_class_calls
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
@@ -29,6 +30,9 @@ from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom
 
 #: ``object.__new__``: what a class's own ``__new__`` calls to make the instance.
 OBJECT_NEW = "builtins.object.__new__"
+#: What a ``@contextlib.contextmanager`` function's call returns: a record whose ``entered``
+#: field is what the generator yields (the stdlib stub gives its ``__enter__``).
+GENERATOR_CONTEXT_MANAGER = "contextlib._GeneratorContextManager"
 
 
 class CallSemantics:
@@ -173,6 +177,9 @@ class CallSemantics:
         task = self.an.function_task(fid, ctx)
         self.record_call(node, ("task", task))
         self.an.run_now(task)
+        if func.context_manager:
+            entered = self.an.read(("yield", task), self.frame.task)
+            return atoms([Record(GENERATOR_CONTEXT_MANAGER, (("entered", entered),))])
         return self.an.read(("ret", task), self.frame.task)
 
     def record_call(self, node, callee: tuple, args: tuple = (), effects: tuple = ()) -> None:
@@ -527,7 +534,7 @@ class CallSemantics:
             values = tuple((name, self.ref(ref, bound, receiver)) for name, ref in spec.args) + marks
             texts = tuple((name, written[ref.data]) for name, ref in spec.args
                           if ref.how == "arg" and ref.data in written)
-            key = (id(node), model.qualname, index, receiver)
+            key = (id(node), model.qualname, index, receiver, frame.row)
             frame.effects[key] = Effect(
                 spec.kind, values, frame.module.path, getattr(node, "lineno", 0),
                 frame.module.column(node) if node is not None else 0,
@@ -548,6 +555,8 @@ class CallSemantics:
         return result
 
     def model_return(self, spec: ReturnSpec, bound: dict, receiver: Atom | None, node) -> Value:
+        if spec.how == "enter":
+            return self.call_method(bound.get(spec.data, TOP), "__enter__", [], node)
         if spec.how == "instance":
             qualname = self.lib.canonical(spec.data)
             return atoms([Obj(self._site(node), Extern(qualname))])
@@ -652,8 +661,8 @@ class CallSemantics:
                 return const("")
             if pos and all(v.consts() is not None for v in pos):
                 return fold(PURE_BUILTINS[name], list(pos))
-            if name == "len":
-                return TOP
+            if name == "len" and len(pos) == 1:
+                return _known_length(pos[0])
             return TOP
         if name == "range" and pos and all(v.consts() is not None for v in pos):
             out = fold(lambda *a: tuple(range(*a)) if len(range(*a)) <= MAX_ATOMS else _raise(),
@@ -668,8 +677,18 @@ class CallSemantics:
                     return atoms(Seq(name, a.items) for a in seqs)
             return atoms([Coll(name, self.iter_elem(pos[0]))])
         if name == "enumerate" and pos:
+            start = pos[1] if len(pos) > 1 else args.kw.get("start", const(0))
+            items = _listed(pos[0])
+            if items is not None and len(start.consts() or ()) == 1 and \
+                    isinstance(start.consts()[0], int) and len(pos) <= 2:
+                first = start.consts()[0]
+                return atoms([Seq("list", tuple(atoms([Seq("tuple", (const(first + i), item))])
+                                                for i, item in enumerate(items)))])
             return atoms([Coll("list", atoms([Seq("tuple", (TOP, self.iter_elem(pos[0])))]))])
         if name == "zip" and pos:
+            columns = [_listed(p) for p in pos]
+            if not args.kw and all(c is not None for c in columns):
+                return atoms([Seq("list", tuple(atoms([Seq("tuple", row)]) for row in zip(*columns)))])
             return atoms([Coll("list", atoms([Seq("tuple", tuple(self.iter_elem(p) for p in pos))]))])
         if name == "dict":
             if args.kw and not pos:
@@ -753,6 +772,32 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _listed(value: Value) -> tuple[Value, ...] | None:
+    """The items of ``value`` when it is one sequence whose items are listed (and not an
+    empty list that unseen code may fill): what ``zip``/``enumerate`` pair row by row."""
+    if value.is_top or value.is_bottom or len(value.atoms) != 1:
+        return None
+    [atom] = value.atoms
+    if not isinstance(atom, Seq) or may_be_filled_elsewhere(atom):
+        return None
+    return atom.items
+
+
+def _known_length(value: Value) -> Value:
+    """``len(value)`` where every possibility has a known length: a sequence or dict whose
+    items are listed (``for i in range(len(self.topics))`` over a list the caller wrote);
+    not an empty list or dict, which unseen code may fill (as its truth decides nothing)."""
+    if value.is_top or value.is_bottom:
+        return TOP
+    lengths = []
+    for atom in value:
+        if isinstance(atom, (Seq, DictAtom)) and not may_be_filled_elsewhere(atom):
+            lengths.append(len(atom.items))
+        else:
+            return TOP
+    return atoms(Const.of(n) for n in sorted(set(lengths)))
 
 
 def _has_shape(model: FunctionModel, spec: StandIn, args: "Args") -> bool:

@@ -131,9 +131,11 @@ class Analysis:
         #: are entry points too (the framework or the user calls them).
         self.objects: dict[int, set[Obj]] = {}
         self.called: set[int] = set()              # fids with at least one task
-        #: Calls evaluated at least once, as (path, line, col_offset): what ``--explain`` reads
-        #: to tell a call the analysis reached from one it never got to.
-        self.reached_calls: set[tuple[str, int, int]] = set()
+        #: The calls each task evaluated in its last run, as (path, line, col_offset): what
+        #: ``--explain`` reads to tell a call the analysis reached from one it never got to.
+        #: Per run, not accumulated: an early run reads values not yet computed (a module's
+        #: constant still ⊥) and takes branches that the final run rules out.
+        self.reached_calls: dict[Task, set[tuple[str, int, int]]] = {}
         self.diagnostics: list[Diagnostic] = []
         self._known: set[Task] = set()
         #: Accounts by module name; the work queue; the account each queued task is charged to.

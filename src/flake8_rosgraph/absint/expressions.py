@@ -12,9 +12,11 @@ from typing import Callable
 from .folding import BINOPS, CMPOPS, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
+from .enums import is_member_site
+from .rows import LoopRows, rows_of
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
-                     DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Seq, Value, atoms, const,
-                     join_all, joined)
+                     DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
+                     const, join_all, joined)
 
 
 class ExpressionSemantics:
@@ -138,13 +140,17 @@ class ExpressionSemantics:
                 for b in right:
                     if isinstance(a, Const) and isinstance(b, Const):
                         out.add(fn(a.value, b.value))
+                    elif isinstance(a, Obj) and isinstance(b, Obj) and is_member_site(a.site) \
+                            and is_member_site(b.site):
+                        out.add((a.site == b.site) != negate)
                     elif isinstance(a, Const) != isinstance(b, Const) and \
                             None in (getattr(a, "value", 0), getattr(b, "value", 0)):
                         out.add(negate)  # an object is never None
                     else:
                         out.update((True, False))
             return atoms(Const.of(x) for x in out)
-        if isinstance(op, (ast.In, ast.NotIn)) and left.consts() is not None and not right.is_top:
+        if isinstance(op, (ast.In, ast.NotIn)) and not right.is_top and (
+                left.consts() is not None or _member_sites(left) is not None):
             return _membership(left, right, negate=isinstance(op, ast.NotIn))
         return BOOLS
 
@@ -193,6 +199,64 @@ class ExpressionSemantics:
             out = out.join(self._subscript(atom, index))
         return out
 
+    def _call_per_row(self, node: ast.Call) -> Value | None:
+        """A creation call in the body of a loop over a written-out table, evaluated once per
+        row with the loop variables its arguments read bound to that row's values, so that
+        each entity gets its own name, type and callback (:mod:`.rows`); ``None`` when the
+        call is not one (evaluated once, as usual)."""
+        frame = self.frame
+        arguments = [*node.args, *(kw.value for kw in node.keywords)]
+        if not arguments or not all(self._pure_test(arg) for arg in arguments):
+            return None
+        read = {n.id for arg in arguments for n in ast.walk(arg) if isinstance(n, ast.Name)}
+        best: tuple[int, LoopRows] | None = None
+        for loop, table in frame.loop_rows.items():
+            used = read.intersection(table.names)
+            if used and all(self._holder(n).get(n) is v for n, v in zip(table.names, table.bound)) \
+                    and (best is None or len(used) > len(read.intersection(best[1].names))):
+                best = (loop, table)
+        if best is None or not self._creates(self.eval(node.func)):
+            return None
+        loop, table = best
+        holders = [self._holder(name) for name in table.names]
+        saved = [holder[name] for holder, name in zip(holders, table.names)]
+        out = BOTTOM
+        try:
+            for index, row in enumerate(table.rows):
+                for holder, name, value in zip(holders, table.names, row):
+                    holder[name] = value
+                frame.row = (loop, index)
+                out = out.join(self.e_Call(node))
+        finally:
+            for holder, name, value in zip(holders, table.names, saved):
+                holder[name] = value
+            frame.row = None
+        return out
+
+    def _holder(self, name: str) -> dict[str, Value]:
+        """Where ``name`` lives here: the innermost comprehension binding it, else the frame."""
+        for overlay in reversed(self.frame.comp):
+            if name in overlay:
+                return overlay
+        return self.frame.env
+
+    def _creates(self, func: Value) -> bool:
+        """Whether calling ``func`` runs a library model with effects (``create_service``, an
+        ``ActionServer``): only those are split per row, not the workspace's own functions
+        (each row would be a calling context of its own)."""
+        if func.is_top or func.is_bottom:
+            return False
+        for atom in func:
+            qualname = atom.qualname if isinstance(atom, (Extern, ExternBound)) else None
+            if qualname is None:
+                return False
+            owner, _, method = qualname.rpartition(".")
+            model = self.lib.functions.get(qualname) or self.lib.method(owner, method) \
+                or self.lib.method(qualname, "__init__")
+            if model is None or not model.effects:
+                return False
+        return True
+
     def _subscript(self, atom: Atom, index: Value) -> Value:
         keys = index.consts()
         if isinstance(atom, Seq) and keys is not None:
@@ -209,10 +273,16 @@ class ExpressionSemantics:
         if isinstance(atom, Coll):
             return atom.elem
         if isinstance(atom, DictAtom):
-            if keys is None:
+            members = _member_sites(index)
+            if keys is None and members is None:
                 return join_all(v for _, v in atom.items)
             out = BOTTOM
             for k, v in atom.items:
+                if members is not None:  # a table keyed by enum members: by identity
+                    found = _member_sites(k)
+                    if not k.is_bottom and (found is None or found & members):
+                        out = out.join(v)
+                    continue
                 kc = k.consts()
                 if kc is None or any(x in kc for x in keys):
                     out = out.join(v)
@@ -236,11 +306,14 @@ class ExpressionSemantics:
 
     def e_Yield(self, node: ast.Yield) -> Value:
         """What the generator yields is kept per function (``("yield", fid)``): a framework
-        that takes a generator's first value (a pytest fixture) reads it there."""
+        that takes a generator's first value (a pytest fixture) reads it there; and per task
+        (``("yield", task)``), for the caller of a ``@contextmanager`` function, whose
+        ``with … as x`` gets what that call's generator yields, not every call's."""
         value = self.eval(node.value) if node.value is not None else const(None)
         func = self.frame.func
         if func is not None and isinstance(node, ast.Yield):
             self.an.write(("yield", func.fid), value)
+            self.an.write(("yield", self.frame.task), value)
         return TOP
 
     e_YieldFrom = e_Yield
@@ -250,11 +323,16 @@ class ExpressionSemantics:
         self.frame.comp.append(overlay)
         try:
             for gen in node.generators:
-                elem = self.iter_elem(self.eval(gen.iter))
+                iterable = self.eval(gen.iter)
+                elem = self.iter_elem(iterable)
                 for name_node in ast.walk(gen.target):
                     if isinstance(name_node, ast.Name):
                         overlay[name_node.id] = TOP
                 self.assign(gen.target, elem)
+                found = rows_of(gen.target, iterable)
+                if found is not None:  # ``{n: node.create_publisher(t, n, 10) for n, t in TABLE}``
+                    self.frame.loop_rows[id(gen)] = LoopRows(
+                        found[0], tuple(overlay[n] for n in found[0]), found[1])
                 for cond in gen.ifs:
                     self.eval(cond)
             if isinstance(node, ast.DictComp):
@@ -264,6 +342,8 @@ class ExpressionSemantics:
                 elem = self.eval(node.elt)
         finally:
             self.frame.comp.pop()
+            for gen in node.generators:
+                self.frame.loop_rows.pop(id(gen), None)
         kind = {ast.ListComp: "list", ast.SetComp: "set", ast.DictComp: "dict"}.get(
             type(node), "gen")
         return atoms([Coll(kind, elem)])
@@ -271,7 +351,12 @@ class ExpressionSemantics:
     e_SetComp = e_DictComp = e_GeneratorExp = e_ListComp
 
     def e_Call(self, node: ast.Call) -> Value:
-        self.an.reached_calls.add((self.frame.module.path, node.lineno, node.col_offset))
+        if self.frame.loop_rows and self.frame.row is None:
+            per_row = self._call_per_row(node)
+            if per_row is not None:
+                return per_row
+        self.an.reached_calls.setdefault(self.frame.task, set()).add(
+            (self.frame.module.path, node.lineno, node.col_offset))
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
@@ -324,6 +409,9 @@ class ExpressionSemantics:
                 out = out.join(join_all(k for k, _ in atom.items))
             elif isinstance(atom, Const) and isinstance(atom.value, str):
                 out = out.join(fold(lambda s: s, [atoms([atom])]) if len(atom.value) == 1 else TOP)
+            elif isinstance(atom, ClassAtom) and self.enum_members(atom) is not None:
+                for name in self.enum_members(atom):  # ``for topic in Topics:``
+                    out = out.join(self.enum_member(atom, name))
             else:
                 return TOP
         # A collection supplied from outside (a parameter's list): its default's elements are
@@ -380,14 +468,20 @@ def _const_tuples(value: Value) -> list[tuple] | None:
 
 
 def _membership(left: Value, right: Value, negate: bool) -> Value:
-    """``left in right`` for constants in tuples/lists of known length (``msg.__module__ in
-    ('a', 'b')``): decided where every item that could match is a known constant."""
+    """``left in right`` for constants (or enum members) in tuples/lists of known length
+    (``msg.__module__ in ('a', 'b')``, ``mode in (Mode.SIM, Mode.REPLAY)``): decided where
+    every item that could match is a known constant (member)."""
+    by_identity = _member_sites(left)
     out: set[bool] = set()
     for container in right:
         if not isinstance(container, Seq):
             return BOOLS
-        items = [item.consts() for item in container.items]
-        for value in left.consts() or ():
+        if by_identity is not None:
+            items = [None if (m := _member_sites(item)) is None else sorted(m)
+                     for item in container.items]
+        else:
+            items = [item.consts() for item in container.items]
+        for value in sorted(by_identity) if by_identity is not None else left.consts() or ():
             if any(len(item) == 1 and item[0] == value for item in items if item is not None):
                 out.add(not negate)
             elif all(item is not None and value not in item for item in items):
@@ -396,3 +490,10 @@ def _membership(left: Value, right: Value, negate: bool) -> Value:
                 out.update((True, False))
     return atoms(Const.of(x) for x in out) if out else BOOLS
 
+
+def _member_sites(value: Value) -> frozenset[str] | None:
+    """The enum members ``value`` may be (their sites), ``None`` unless it is only members."""
+    if value.is_top or value.is_bottom or not all(
+            isinstance(a, Obj) and is_member_site(a.site) for a in value):
+        return None
+    return frozenset(a.site for a in value)

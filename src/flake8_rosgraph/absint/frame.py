@@ -5,6 +5,7 @@ from dataclasses import dataclass, field
 
 from .engine import Task
 from .program import Class, Function, Module
+from .rows import LoopRows
 from .values import BOTTOM, Value
 
 Env = dict  # variable name -> Value
@@ -27,3 +28,8 @@ class Frame:
     comp: list[dict[str, Value]] = field(default_factory=list)
     ret: Value = BOTTOM
     falls_off: bool = False  # the end of the body is reached without a return statement
+    #: The rows of the loops over written-out tables, by loop (id of its binding), while
+    #: their variables hold what the loop bound (see :mod:`.rows`).
+    loop_rows: dict[int, LoopRows] = field(default_factory=dict)
+    #: The row a creation call is being evaluated for: ``(loop, row index)``, else ``None``.
+    row: tuple[int, int] | None = None

@@ -18,6 +18,7 @@ from .cfg import CFG, Bind, Eval, Return
 from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
 from .frame import Env, Frame
 from .program import Module
+from .rows import LoopRows, rows_of
 from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Record,
                      Seq, Value, atoms, const)
 from .calls import CallSemantics
@@ -60,6 +61,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     # tasks and CFGs
     # =====================================================================================
     def run_task(self, task: Task) -> tuple[Value, dict, dict, bool]:
+        self.an.reached_calls[task] = set()  # what an earlier run reached no longer counts
         if task[0] == "mod":
             module = self.program.ensure(task[1])
             if module is None:  # too deeply nested to walk: reported by the program
@@ -227,7 +229,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
 
     def exec_bind(self, op: Bind) -> None:
         if op.how == "iter":
-            self.assign(op.target, self.iter_elem(self.eval(op.value)))
+            iterable = self.eval(op.value)
+            self.assign(op.target, self.iter_elem(iterable))
+            self._keep_rows(op, iterable)
         elif op.how == "enter":
             ctx = self.eval(op.value)
             self.assign(op.target, self.call_method(ctx, "__enter__", [], op.value))
@@ -243,6 +247,17 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     # ``case P as x`` binds the whole subject, whatever ``P`` checks.
                     whole = isinstance(node, ast.MatchAs) and node is op.target
                     self.store_name(name, subject if whole else TOP)
+
+    def _keep_rows(self, op: Bind, iterable: Value) -> None:
+        """Keep the rows of a loop over a written-out table beside the joined binding, for
+        the creation calls of its body (:mod:`.rows`); forget them when there are none."""
+        frame = self.frame
+        found = rows_of(op.target, iterable) if frame.cls is None else None
+        if found is None or not all(name in frame.env for name in found[0]):
+            frame.loop_rows.pop(id(op), None)
+            return
+        names, rows = found
+        frame.loop_rows[id(op)] = LoopRows(names, tuple(frame.env[n] for n in names), rows)
 
     def s_Assign(self, op: ast.Assign) -> None:
         value = self.eval(op.value)

@@ -168,7 +168,9 @@ class ReturnSpec:
     """``how``: "instance" (new object of class ``data``), "record" (a record of class
     ``data`` with ``fields``), "ref" (the value of a :class:`Ref`), "partial" (the callable
     in parameter ``data`` with the arguments of the parameters named in ``fields`` —
-    ``args``: a sequence, ``keywords``: a mapping — bound in front), or "unknown"."""
+    ``args``: a sequence, ``keywords``: a mapping — bound in front), "enter" (what the
+    ``__enter__`` of the argument of parameter ``data`` returns, as ``with`` would call it),
+    or "unknown"."""
 
     how: str
     data: Any = None
@@ -383,6 +385,10 @@ def _returns(raw: Any, where: str) -> ReturnSpec:
         fields = _table(raw.get("fields", {}), where + ".fields")
         return ReturnSpec("record", str(raw["record"]),
                           tuple(sorted((k, _ref(v, f"{where}.fields.{k}")) for k, v in fields.items())))
+    if "enter" in raw:
+        if set(raw) != {"enter"} or not isinstance(raw["enter"], str):
+            raise StubError(f"{where}: enter names one parameter and nothing else")
+        return ReturnSpec("enter", raw["enter"])
     return ReturnSpec("ref", _ref(raw, where))
 
 

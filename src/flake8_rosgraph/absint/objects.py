@@ -13,6 +13,7 @@ from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, Dic
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
 from .calls import OBJECT_NEW, Args
+from .enums import ENUM_BASES, MIXIN_BASES, member_names, member_site
 from .fieldclasses import FIELD_BASES, Field, decorated_fields, own_fields
 
 #: The attributes that name a class.
@@ -74,6 +75,9 @@ class ObjectSemantics:
                 return field_value
             return field_value.join(found)
         if isinstance(atom, ClassAtom):
+            member = self.enum_member(atom, attr)
+            if member is not None:
+                return member
             found = self.class_attr(self.mro(atom), attr, None)
             if found is None and attr in _NAME_ATTRS:
                 klass = self.program.classes[atom.cid]
@@ -122,6 +126,31 @@ class ObjectSemantics:
             return self.extern(f"{cls.qualname}.{attr}")
         module, name = identity
         return const(module if attr == "__module__" else name)
+
+    def enum_members(self, cls: ClassAtom) -> tuple[str, ...] | None:
+        """The member names of ``cls`` when it is a workspace ``Enum`` whose members are
+        objects (not ``str``/``int`` mixins, see :mod:`.enums`), in the class body's order."""
+        order = self.mro(cls)
+        libraries = {a.qualname for a in order if isinstance(a, Extern)}
+        if not libraries & ENUM_BASES or libraries & MIXIN_BASES:
+            return None
+        return member_names(self.program.classes[cls.cid])
+
+    def enum_member(self, cls: ClassAtom, attr: str) -> Value | None:
+        """``Mode.NAVIGATION``: the member object, whose ``value`` is what the class body
+        assigned and whose ``name`` is ``attr``; ``None`` when ``attr`` is no member."""
+        members = self.enum_members(cls)
+        if members is None or attr not in members:
+            return None
+        klass = self.program.classes[cls.cid]
+        assigned = self.an.read(("k", cls.cid, attr), self.frame.task)
+        if assigned.is_bottom:
+            return BOTTOM  # the class body has not run yet
+        site = member_site(klass, attr)
+        for field_name, field_value in (("value", assigned), ("_value_", assigned),
+                                        ("name", const(attr)), ("_name_", const(attr))):
+            self.an.write(("a", site, field_name), field_value)
+        return atoms([Obj(site, cls)])
 
     def is_generic_alias(self, cls: ClassAtom) -> bool:
         """Whether ``cls[...]`` is a generic alias of workspace class ``cls`` (``Base[T]`` as a
@@ -225,7 +254,10 @@ class ObjectSemantics:
         out = []
         for atom in value:
             if isinstance(atom, FuncAtom):
-                kind = self.program.functions[atom.fid].kind
+                func = self.program.functions[atom.fid]
+                kind = func.kind
+                if func.setter:
+                    continue  # the property's getter gives what reading the attribute does
                 if kind == "staticmethod":
                     out.append(atom)
                 elif kind == "classmethod":
@@ -245,11 +277,29 @@ class ObjectSemantics:
     def store_attr(self, target: Value, attr: str, value: Value) -> None:
         for atom in target:
             if isinstance(atom, Obj):
+                setters = self._setters(atom, attr)
+                if setters:  # ``scope.executor = executor`` runs the property's setter
+                    for fid in setters:
+                        self.call(atoms([BoundMethod(atom, fid)]), Args([value], {}, False), None)
+                    continue
                 self.an.write(("a", atom.site, attr), value)
             elif isinstance(atom, ClassAtom):
                 self.an.write(("k", atom.cid, attr), value)
             elif isinstance(atom, ModuleAtom):
                 self.an.write(("g", atom.name, attr), value)
+
+    def _setters(self, obj: Obj, attr: str) -> list[int]:
+        """The property setters ``obj.<attr> = …`` runs: those of the first workspace class
+        along the MRO that binds ``attr``."""
+        for cls in self.mro(obj.cls):
+            if not isinstance(cls, ClassAtom):
+                continue
+            bound = self.an.read(("k", cls.cid, attr), self.frame.task)
+            if bound.is_bottom:
+                continue
+            return [a.fid for a in bound if isinstance(a, FuncAtom) and self.program.functions[a.fid].setter] \
+                if not bound.is_top else []
+        return []
 
     # -- classes ----------------------------------------------------------------------------
     def user_bases(self, cid: int) -> list[int]:

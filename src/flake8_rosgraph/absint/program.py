@@ -76,6 +76,12 @@ class Function:
     nonlocal_decl: frozenset[str]
     kind: str = "function"         # "function" | "staticmethod" | "classmethod" | "property"
     is_generator: bool = False
+    #: Decorated with ``contextlib.contextmanager`` (or its async twin): a call makes a
+    #: context manager whose ``__enter__`` hands out what the generator yields.
+    context_manager: bool = False
+    #: Decorated with ``@<name>.setter``: Python calls it for ``obj.<name> = value`` (the
+    #: property of that name), and reading ``obj.<name>`` never gives it.
+    setter: bool = False
     _cfg: CFG | None = None
 
     @property
@@ -113,6 +119,17 @@ def _decorator_kind(node: ast.FunctionDef | ast.AsyncFunctionDef) -> str:
         if name == "cached_property":  # functools': read like a property, computed once
             return "property"
     return "function"
+
+
+#: Decorators that turn a generator function into a context-manager factory (contextlib).
+_CONTEXT_MANAGER_DECORATORS = frozenset({"contextmanager", "asynccontextmanager"})
+
+
+def _is_context_manager(node: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """Read from the decorator's name, as the other decorator kinds are: the analysis binds
+    the name to the function itself, not to what the decorator returns."""
+    return any((dec.id if isinstance(dec, ast.Name) else getattr(dec, "attr", None))
+               in _CONTEXT_MANAGER_DECORATORS for dec in node.decorator_list)
 
 
 @dataclass
@@ -329,6 +346,9 @@ class Program:
                                 cid, frozenset(), frozenset(), frozenset(), frozenset())
                 if not lam:
                     func.kind = _decorator_kind(node)
+                    func.context_manager = _is_context_manager(node)
+                    func.setter = any(isinstance(d, ast.Attribute) and d.attr == "setter"
+                                      for d in node.decorator_list)
                     if cid is not None:
                         self.classes[cid].methods.setdefault(name, func.fid)
                 self.functions.append(func)

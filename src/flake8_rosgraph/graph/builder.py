@@ -496,7 +496,14 @@ def _entity_order(e: Entity) -> tuple:
     """Sort key that is also the identity of an entity on its node."""
     return (e.location, e.kind, e.name or "", e.raw_name or "", e.period or 0.0, repr(e.default),
             e.callback or "", e.type or "", repr(sorted((e.qos or {}).items())), e.conditional,
-            e.invalid or "", e.via or "", e.partial, e.name_template or ())
+            e.invalid or "", e.via or "", e.partial, _template_order(e.name_template))
+
+
+def _template_order(template: tuple[tuple[str, str | None], ...] | None) -> tuple:
+    """A name template as a sort key: a part without a known default (``None``) sorts before
+    every text, so that two templates that differ only there compare (muto's commands node:
+    a parameter declared inside ``try`` has a default on one path and none on the other)."""
+    return tuple((parameter, default is not None, default or "") for parameter, default in template or ())
 
 
 def build_graph_from(analysis: Analysis) -> RosGraph:
