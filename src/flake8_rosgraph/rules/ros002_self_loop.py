@@ -7,6 +7,7 @@ from typing import Iterator
 from ..graph.model import Entity, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
+from .fixtures import node_scope
 from .launch_context import in_package, launched_in_namespace, packages_maybe_namespaced
 from .vocabulary import related
 
@@ -35,6 +36,11 @@ class SelfLoop(Rule):
     add entities from their own module (a reader executable publishing what a
     parser executable subscribes to, on one driver class) is not a loop: ends
     created in two files other than the node's own are not compared.
+    A test fixture (a node created in a test module or under `test/`, as for
+    ROS001) that publishes and subscribes one topic with one type is a test
+    harness checking that its message goes through (or recording what the
+    system under test also hears), not a loop; a fixture whose subscription
+    has another type than its publisher on the name is still reported.
 
     ## Example
     ```python
@@ -67,6 +73,7 @@ class SelfLoop(Rule):
         namespaced = packages_maybe_namespaced(graph)
         for node in graph.nodes:
             instances = launched_in_namespace(node) or (node.launch is None and in_package(node, namespaced))
+            harness = node_scope(node) is not None
             published: dict[str, list[Entity]] = defaultdict(list)
             for pub in node.of_kind("publishers"):
                 # a partly known name (``param if launched else '/scan'``) is no evidence of a loop
@@ -77,8 +84,8 @@ class SelfLoop(Rule):
                     continue
                 if instances and _absolute(sub) and all(_absolute(p) for p in published[sub.name]):
                     continue  # one bus shared by the instances in their namespaces: each hears the others
-                pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)),
-                              key=lambda e: e.location)
+                pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)
+                               and not (harness and _same_type(p, sub))), key=lambda e: e.location)
                 if pubs:
                     message = (f"node '{node.fqn or '?'}' subscribes to topic '{sub.name}' that it publishes "
                                f"at {pubs[0].location.short()}")
@@ -88,6 +95,17 @@ class SelfLoop(Rule):
 def _absolute(entity: Entity) -> bool:
     """Whether the name is written absolute (``/swarm/votes``): it escapes the node's namespace."""
     return (entity.raw_name or "").startswith("/")
+
+
+def _same_type(pub: Entity, sub: Entity) -> bool:
+    """Whether the two ends may carry one message type (an unknown type may).
+
+    A test harness publishes a command and listens on the same topic to see
+    it go through the middleware (or to record what the system under test
+    also hears): both ends then have the topic's one type. A probe pointed by
+    mistake at the harness's own stimulus almost always has another type.
+    """
+    return pub.type is None or sub.type is None or pub.type == sub.type
 
 
 def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:
