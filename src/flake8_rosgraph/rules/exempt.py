@@ -32,6 +32,10 @@ _EXEMPT: tuple[tuple[str, str, str | None], ...] = (
                "subscribes", "rosgraph_msgs/msg/Clock"),
     ("/diagnostics", "aggregated by diagnostic_aggregator and shown by rqt_robot_monitor, both C++ tools",
      "diagnostic_msgs/msg/DiagnosticArray"),
+    ("/diagnostics_agg", "published by diagnostic_aggregator's aggregator_node (C++) from `/diagnostics`; "
+                         "rqt_robot_monitor and robot dashboards consume it", "diagnostic_msgs/msg/DiagnosticArray"),
+    ("/diagnostics_toplevel_state", "published by diagnostic_aggregator's aggregator_node (C++): the "
+                                    "worst level of all analyzers", "diagnostic_msgs/msg/DiagnosticStatus"),
     ("/robot_description", "published (latched) by robot_state_publisher from the URDF",
      "std_msgs/msg/String"),
     ("/joint_states", "joint_state_publisher or ros2_control's joint_state_broadcaster publish it, "
