@@ -1,0 +1,338 @@
+"""Findings a read of every finding on 87 public repositories found false, each fixed by a
+general mechanism: a realistic multi-file workspace with the pattern that was misjudged, and a
+near-identical twin holding the real bug, which must still be reported."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from test_recall_mechanisms import findings
+from test_workspace_discovery import PACKAGE_XML, write
+
+
+def _setup(name: str, scripts: str) -> str:
+    return f"""
+        from setuptools import find_packages, setup
+
+        setup(
+            name='{name}',
+            packages=find_packages(exclude=['test']),
+            entry_points={{'console_scripts': [{scripts}]}},
+        )
+    """
+
+
+# -- ROS002: a test harness that publishes a command and listens to it ------------------------------
+GEAR_TEST = """
+    import rclpy
+    from rclpy.executors import SingleThreadedExecutor
+    from std_msgs.msg import {sub_type}
+    from std_msgs.msg import String
+
+
+    class TestGearCommandBase:
+        msgs_rx = []
+        node = None
+
+        @classmethod
+        def setup_class(cls):
+            rclpy.init()
+            cls.msgs_rx = []
+            cls.node = rclpy.create_node('test_gear_command')
+            cls.sub = cls.node.create_subscription(
+                {sub_type}, '/control/gear_cmd', lambda msg: cls.msgs_rx.append(msg), 10)
+            cls.pub = cls.node.create_publisher(String, '/control/gear_cmd', 10)
+            cls.executor = SingleThreadedExecutor()
+            cls.executor.add_node(cls.node)
+
+        @classmethod
+        def teardown_class(cls):
+            cls.node.destroy_node()
+            rclpy.shutdown()
+
+        def test_gear_command_goes_through(self):
+            msg = String()
+            msg.data = 'drive'
+            while len(self.msgs_rx) < 3:
+                self.pub.publish(msg)
+                self.executor.spin_once(timeout_sec=0.1)
+            assert self.msgs_rx[-1].data == 'drive'
+"""
+
+GEAR_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    class GearReporter(Node):
+        def __init__(self):
+            super().__init__('gear_reporter')
+            self.create_subscription(String, '/control/gear_cmd', self.on_gear, 10)
+            self.report = self.create_publisher(String, '/vehicle/gear_report', 10)
+
+        def on_gear(self, msg):
+            self.report.publish(msg)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(GearReporter())
+"""
+
+
+def gear_workspace(root: Path, sub_type: str) -> Path:
+    return write(root, {
+        "sim_check/package.xml": PACKAGE_XML.format(name="sim_check", build="ament_python"),
+        "sim_check/setup.py": _setup("sim_check", "'gear_reporter = sim_check.gear_reporter:main'"),
+        "sim_check/sim_check/__init__.py": "",
+        "sim_check/sim_check/gear_reporter.py": GEAR_NODE,
+        "sim_check/test/test_gear_command.py": GEAR_TEST.format(sub_type=sub_type),
+    })
+
+
+def test_a_test_harness_hearing_its_own_command_is_no_self_loop(tmp_path: Path) -> None:
+    """autoware_tools' simulator_compatibility_test (5 false ROS002), rosbridge's and ros2cli's
+    tests: the test publishes a command and subscribes to it with the same type, by design."""
+    root = gear_workspace(tmp_path, "String")
+    assert findings(root, ["ROS002"]) == []
+
+
+def test_a_test_probe_of_another_type_on_its_own_topic_is_still_a_loop(tmp_path: Path) -> None:
+    """The twin: the probe subscribes, with another type, the name the harness publishes."""
+    root = gear_workspace(tmp_path, "Int32")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS002"])] == [
+        ("ROS002", "sim_check/test/test_gear_command.py")]
+
+
+def test_a_production_node_hearing_its_own_output_is_still_a_loop(tmp_path: Path) -> None:
+    """Same type, but not a test: the subscription hears the node's own output."""
+    root = gear_workspace(tmp_path, "String")
+    reporter = root / "sim_check/sim_check/gear_reporter.py"
+    reporter.write_text(reporter.read_text().replace("'/vehicle/gear_report'", "'/control/gear_cmd'"))
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS002"])] == [
+        ("ROS002", "sim_check/sim_check/gear_reporter.py")]
+
+
+# -- ROS007: the nodes one executable runs, and what ties two nodes together --------------------------
+BRIDGE_SCRIPT = """
+    #!/usr/bin/env python3
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+    from web_bridge import ClientManager
+
+
+    class BridgeServerNode(Node):
+        def __init__(self):
+            super().__init__('bridge_server')
+            ClientManager.node_handle = self
+            self.create_publisher(String, 'client_count', 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(BridgeServerNode())
+
+
+    if __name__ == '__main__':
+        main()
+"""
+
+CLIENT_MANAGER = """
+    class ClientManager:
+        node_handle = None
+        clients = []
+
+        @classmethod
+        def add(cls, client):
+            cls.clients.append(client)
+"""
+
+BRIDGE_CMAKE = """
+    cmake_minimum_required(VERSION 3.5)
+    project(web_bridge)
+    find_package(ament_cmake_python REQUIRED)
+    ament_python_install_package(web_bridge)
+    install(PROGRAMS
+      scripts/bridge_server.py
+      scripts/bridge_server
+      DESTINATION lib/${PROJECT_NAME}
+    )
+    ament_package()
+"""
+
+BRIDGE_LAUNCH = """
+    <launch>
+      <arg name="port" default="9090"/>
+      <node pkg="web_bridge" exec="bridge_server" name="bridge_server" output="screen">
+        <param name="port" value="$(var port)"/>
+      </node>{second}
+    </launch>
+"""
+
+
+def bridge_workspace(root: Path, second: str = "") -> Path:
+    return write(root, {
+        "web_bridge/package.xml": PACKAGE_XML.format(name="web_bridge", build="ament_cmake"),
+        "web_bridge/CMakeLists.txt": BRIDGE_CMAKE,
+        "web_bridge/web_bridge/__init__.py": CLIENT_MANAGER,
+        "web_bridge/scripts/bridge_server": BRIDGE_SCRIPT,
+        "web_bridge/scripts/bridge_server.py": BRIDGE_SCRIPT,
+        "web_bridge/launch/bridge_launch.xml": BRIDGE_LAUNCH.format(second=second),
+    })
+
+
+def test_a_script_and_its_copy_with_an_extension_are_two_executables(tmp_path: Path) -> None:
+    """rosbridge_suite installs ``scripts/rosbridge_websocket`` and ``rosbridge_websocket.py``:
+    each defines its own node class of one name; launching one runs that one only."""
+    root = bridge_workspace(tmp_path)
+    assert findings(root, ["ROS007"]) == []
+
+
+def test_launching_both_copies_under_one_name_is_still_a_duplicate(tmp_path: Path) -> None:
+    second = """
+      <node pkg="web_bridge" exec="bridge_server.py" name="bridge_server" output="screen"/>"""
+    root = bridge_workspace(tmp_path, second)
+    assert [(code, path, line) for code, path, line, _ in findings(root, ["ROS007"])] == [
+        ("ROS007", "web_bridge/launch/bridge_launch.xml", 3),
+        ("ROS007", "web_bridge/launch/bridge_launch.xml", 6)]
+
+
+NAVIGATION = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+    from tf2_ros import Buffer, {tf_class}
+
+
+    class Navigation(Node):
+        def __init__(self):
+            super().__init__('navigation')
+            self.tf = {tf_class}({tf_args})
+            self.create_{role}(String, '{topic}', {rest}10)
+
+        def on_state(self, msg):
+            self.get_logger().info(msg.data)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Navigation())
+"""
+
+NAV_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='{package}', executable='{executable}', name='navigation'),
+        ])
+"""
+
+
+def navigation_workspace(root: Path, topic: str) -> Path:
+    """The rover's navigation and the training project's navigation: one class name, one node
+    name, two packages, each started by a launch file of its own."""
+    rover = NAVIGATION.format(tf_class="StaticTransformBroadcaster", tf_args="self", role="publisher",
+                              topic="/nav_state", rest="")
+    starter = NAVIGATION.format(tf_class="TransformListener", tf_args="Buffer(), self",
+                                role="subscription", topic=topic, rest="self.on_state, ")
+    return write(root, {
+        "rover/package.xml": PACKAGE_XML.format(name="rover", build="ament_python"),
+        "rover/setup.py": _setup("rover", "'nav = rover.nav:main'"),
+        "rover/rover/__init__.py": "",
+        "rover/rover/nav.py": rover,
+        "rover/launch/navigation.launch.py": NAV_LAUNCH.format(package="rover", executable="nav"),
+        "starter/package.xml": PACKAGE_XML.format(name="starter", build="ament_python"),
+        "starter/setup.py": _setup("starter", "'navigation = starter.navigation:main'"),
+        "starter/starter/__init__.py": "",
+        "starter/starter/navigation.py": starter,
+        "starter/launch/starter.launch.py": NAV_LAUNCH.format(package="starter", executable="navigation"),
+    })
+
+
+def test_two_same_named_classes_of_two_executables_are_not_one_executable(tmp_path: Path) -> None:
+    """mrover-ros2: ``Navigation`` in ``navigation/nav.py`` and in the starter project; each
+    executable creates its own class's node only, and using ``/tf_static`` (which every node
+    may use) does not make the two run together."""
+    root = navigation_workspace(tmp_path, "/starter_state")
+    assert findings(root, ["ROS007"]) == []
+
+
+def test_two_navigations_talking_over_a_topic_are_still_a_duplicate(tmp_path: Path) -> None:
+    """The twin: the starter subscribes the rover's ``/nav_state``: they are one system."""
+    root = navigation_workspace(tmp_path, "/nav_state")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS007"])] == [
+        ("ROS007", "rover/launch/navigation.launch.py"), ("ROS007", "starter/launch/starter.launch.py")]
+
+
+# -- ROS003: diagnostic_aggregator's output ----------------------------------------------------------
+MONITOR = """
+    import rclpy
+    from diagnostic_msgs.msg import DiagnosticArray
+    from rclpy.node import Node
+    from std_msgs.msg import Bool
+
+
+    class HardwareMonitor(Node):
+        def __init__(self):
+            super().__init__('hardware_monitor')
+            self.create_subscription(DiagnosticArray, '{topic}', self.on_diagnostics, 10)
+            self.create_subscription(Bool, '/motor_power', self.on_power, 10)
+            self.pub = self.create_publisher(Bool, '/hardware_ok', 10)
+
+        def on_diagnostics(self, msg):
+            self.pub.publish(Bool(data=all(s.level == 0 for s in msg.status)))
+
+        def on_power(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(HardwareMonitor())
+"""
+
+POWER = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Bool
+
+
+    class Power(Node):
+        def __init__(self):
+            super().__init__('power')
+            self.create_publisher(Bool, '/motor_power', 10)
+            self.create_subscription(Bool, '/hardware_ok', self.on_ok, 10)
+
+        def on_ok(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Power())
+"""
+
+
+def monitor_workspace(root: Path, topic: str) -> Path:
+    return write(root, {
+        "hcm/package.xml": PACKAGE_XML.format(name="hcm", build="ament_python"),
+        "hcm/setup.py": _setup("hcm", "'monitor = hcm.monitor:main', 'power = hcm.power:main'"),
+        "hcm/hcm/__init__.py": "",
+        "hcm/hcm/monitor.py": MONITOR.format(topic=topic),
+        "hcm/hcm/power.py": POWER,
+    })
+
+
+def test_the_aggregated_diagnostics_are_infrastructure(tmp_path: Path) -> None:
+    """bitbots_main: ``/diagnostics_agg`` is published by diagnostic_aggregator (C++)."""
+    assert findings(monitor_workspace(tmp_path, "/diagnostics_agg"), ["ROS003"]) == []
+
+
+def test_a_slip_of_the_aggregated_diagnostics_is_still_reported(tmp_path: Path) -> None:
+    (finding,) = findings(monitor_workspace(tmp_path, "/diagnostic_agg"), ["ROS003"])
+    assert finding[0] == "ROS003" and "did you mean '/diagnostics_agg'" in finding[3]
