@@ -336,3 +336,88 @@ def test_the_aggregated_diagnostics_are_infrastructure(tmp_path: Path) -> None:
 def test_a_slip_of_the_aggregated_diagnostics_is_still_reported(tmp_path: Path) -> None:
     (finding,) = findings(monitor_workspace(tmp_path, "/diagnostic_agg"), ["ROS003"])
     assert finding[0] == "ROS003" and "did you mean '/diagnostics_agg'" in finding[3]
+
+
+# -- ROS102: "declared again" on a node object that stands for several nodes --------------------------
+CONNECTOR = """
+    from rclpy.node import Node
+
+
+    class Connector:
+        '''Wraps a node of its own; every agent and service of the package makes one.'''
+
+        def __init__(self, node_name, executor_type='single_threaded'):
+            self.executor_type = executor_type
+            self._node = Node(node_name)
+
+        @property
+        def node(self):
+            return self._node
+"""
+
+AGENTS = """
+    from perception.connector import Connector
+
+
+    def make_agents():
+        return [Connector(name) for name in ('asr', 'tts', 'nav', 'map', 'arm')]
+"""
+
+TOOLS = """
+    from perception.connector import Connector
+
+
+    def make_tools():
+        return [Connector('tool_a'), Connector('tool_b'), Connector('tool_c'), Connector('tool_d'),
+                Connector('tool_e', 'multi_threaded'), Connector('tool_f', 'multi_threaded'),
+                Connector('tool_g', 'multi_threaded'), Connector('tool_h', 'multi_threaded')]
+"""
+
+SERVICES = """
+    import os
+
+    import rclpy
+
+    from perception.agents import make_agents
+    from perception.connector import Connector{tools_import}
+
+
+    def main():
+        rclpy.init()
+        agents = {agents}
+        detection = Connector('detection_service', executor_type='single_threaded')
+        segmentation = Connector('segmentation_service', executor_type='single_threaded')
+        legacy = os.getenv('LEGACY_NAMES', 'true') == 'true'
+        detection.node.declare_parameter('enable_legacy_service_names', legacy)
+        {second}.node.declare_parameter('enable_legacy_service_names', legacy)
+        rclpy.spin(detection.node)
+"""
+
+
+def services_workspace(root: Path, second: str, tools: bool = True) -> Path:
+    """With the tools, the package makes more connectors than the analysis keeps apart, so the
+    two services' nodes share one object."""
+    services = SERVICES.format(second=second, agents="make_agents() + make_tools()" if tools else "make_agents()",
+                               tools_import="\n    from perception.tools import make_tools" if tools else "")
+    return write(root, {
+        "perception/package.xml": PACKAGE_XML.format(name="perception", build="ament_python"),
+        "perception/setup.py": _setup("perception", "'services = perception.services:main'"),
+        "perception/perception/__init__.py": "",
+        "perception/perception/connector.py": CONNECTOR,
+        "perception/perception/agents.py": AGENTS,
+        "perception/perception/services.py": services,
+        **({"perception/perception/tools.py": TOOLS} if tools else {}),
+    })
+
+
+def test_one_declaration_on_each_of_two_merged_nodes_is_no_redeclaration(tmp_path: Path) -> None:
+    """rai: two connectors' nodes, merged into one object by the bound on analysed contexts,
+    each declare ``enable_legacy_service_names`` once."""
+    assert findings(services_workspace(tmp_path, "segmentation"), ["ROS102"]) == []
+
+
+def test_declaring_twice_on_one_node_is_still_a_redeclaration(tmp_path: Path) -> None:
+    """The twin, with the nodes kept apart: declaring twice on one of them is reported."""
+    (finding,) = findings(services_workspace(tmp_path, "detection", tools=False), ["ROS102"])
+    assert finding[:3] == ("ROS102", "perception/perception/services.py", 16)
+    assert "declared again" in finding[3]

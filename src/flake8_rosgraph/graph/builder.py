@@ -208,11 +208,17 @@ class GraphBuilder:
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
         try:
-            graph.usage = build_usage(self.analysis, self._node_labels())
+            graph.usage = build_usage(self.analysis, self._node_labels(), self._shared_sites())
         except Exception as exc:  # a defect there must cost the misuse rules only, not the graph
             graph.diagnostics.append(Diagnostic("", 0, "rclpy usage facts not extracted: internal "
                                                        f"error: {type(exc).__name__}: {exc}", "error"))
         return graph
+
+    def _shared_sites(self) -> frozenset[str]:
+        """Node object sites that stand for several nodes: the analysis' bound on contexts
+        merged the objects of several creations (``Connector('a')``, ``Connector('b')``, … built
+        through one factory), so two calls on "the" object may be calls on two nodes."""
+        return frozenset(site for site, nodes in self.by_object.items() if len(nodes) > 1)
 
     def _node_labels(self) -> dict[str, str]:
         """Node object site -> how messages name it (its name(s), or its class)."""

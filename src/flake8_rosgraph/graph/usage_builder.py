@@ -57,13 +57,16 @@ def _single_const(value: Value):
 class UsageBuilder:
     """Builds :class:`UsageFacts` from a finished analysis."""
 
-    def __init__(self, analysis: Analysis, node_labels: dict[str, str]) -> None:
+    def __init__(self, analysis: Analysis, node_labels: dict[str, str],
+                 shared_sites: frozenset[str] = frozenset()) -> None:
         self.analysis = analysis
         self.program = analysis.program
         self.library = analysis.library
         self.calls: CallGraph = analysis.call_graph()
         self.effects = analysis.all_effects()
         self.node_labels = node_labels
+        #: Node object sites that stand for several nodes (:meth:`.GraphBuilder._shared_sites`).
+        self.shared_sites = shared_sites
         self.partial_fids = self._partial_functions()
         self.entities = self._awaitable_entities()
         self.executors: dict[str, set[str]] = {}         # node site -> executor kinds
@@ -421,7 +424,9 @@ class UsageBuilder:
                     continue
                 name = _single_const(eff.arg("name"))
                 nodes = _obj_sites(eff.arg("node"))
-                if isinstance(name, str) and nodes is not None and len(nodes) == 1:
+                # "Declared again" needs one node: a site standing for several may be two of them.
+                if isinstance(name, str) and nodes is not None and len(nodes) == 1 \
+                        and not nodes & self.shared_sites:
                     items.append(((name, next(iter(nodes))), _loc(site)))
         first: dict[tuple[str, str], Location] = {}
         for key, location in sorted(items, key=lambda i: i[1]):
@@ -602,8 +607,9 @@ def _used_names(eff: Effect) -> tuple[str, ...] | None:
     return tuple(names)
 
 
-def build_usage(analysis: Analysis, node_labels: dict[str, str]) -> UsageFacts:
-    return UsageBuilder(analysis, node_labels).build()
+def build_usage(analysis: Analysis, node_labels: dict[str, str],
+                shared_sites: frozenset[str] = frozenset()) -> UsageFacts:
+    return UsageBuilder(analysis, node_labels, shared_sites).build()
 
 
 def _task_text(item: tuple[tuple, dict]) -> str:

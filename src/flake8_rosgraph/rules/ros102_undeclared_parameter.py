@@ -43,7 +43,10 @@ class UndeclaredParameter(Rule):
     be a node, or a name that is not known. Parameters rclpy declares itself
     (`use_sim_time`, `qos_overrides.*`, ...) count as declared. A declaration
     repeated by a loop is not detected, only two declarations on one path; one
-    inside a `try` or an `if` is never counted as a repeat.
+    inside a `try` or an `if` is never counted as a repeat, nor are two on a node
+    object the analysis knows only as one of several nodes (many connectors built
+    through one factory, merged by its bound on calling contexts): they may be on
+    two nodes.
 
     ## Example
     ```python
