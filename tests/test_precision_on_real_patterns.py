@@ -421,3 +421,72 @@ def test_declaring_twice_on_one_node_is_still_a_redeclaration(tmp_path: Path) ->
     (finding,) = findings(services_workspace(tmp_path, "detection", tools=False), ["ROS102"])
     assert finding[:3] == ("ROS102", "perception/perception/services.py", 16)
     assert "declared again" in finding[3]
+
+
+# -- ROS102: a read guarded by ``except ParameterNotDeclaredException`` -------------------------------
+STATE_LOGGER = """
+    from rclpy.exceptions import ParameterAlreadyDeclaredException, ParameterException
+    from rclpy.exceptions import ParameterNotDeclaredException
+
+
+    class StateLogger:
+        '''Logs state transitions; the behavior's node may or may not declare the settings.'''
+
+        _node = None
+        _log_folder = None
+        _log_enabled = None
+
+        @staticmethod
+        def initialize_ros(node):
+            StateLogger._node = node
+            try:
+                StateLogger._log_folder = node.get_parameter('log_folder').value
+            except {caught}:
+                node.get_logger().info("StateLogger: no 'log_folder' parameter, logging to ~/.logs")
+                StateLogger._log_folder = '~/.logs'
+            StateLogger._log_enabled = node.get_parameter('log_enabled').value
+"""
+
+BEHAVIOR = """
+    import rclpy
+    from rclpy.node import Node
+
+    from behavior_core.state_logger import StateLogger
+
+
+    class BehaviorOnboard(Node):
+        def __init__(self):
+            super().__init__('behavior_onboard')
+            self.declare_parameter('log_enabled', False)
+            StateLogger.initialize_ros(self)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(BehaviorOnboard())
+"""
+
+
+def behavior_workspace(root: Path, caught: str) -> Path:
+    return write(root, {
+        "behavior_core/package.xml": PACKAGE_XML.format(name="behavior_core", build="ament_python"),
+        "behavior_core/setup.py": _setup("behavior_core", "'onboard = behavior_core.onboard:main'"),
+        "behavior_core/behavior_core/__init__.py": "",
+        "behavior_core/behavior_core/state_logger.py": STATE_LOGGER.format(caught=caught),
+        "behavior_core/behavior_core/onboard.py": BEHAVIOR,
+    })
+
+
+def test_a_read_that_handles_the_undeclared_parameter_is_no_bug(tmp_path: Path) -> None:
+    """flexbe's RosState: ``try: node.get_parameter('breakpoints') except
+    ParameterNotDeclaredException:`` logs and uses a default; a base class of the exception
+    handles it as well."""
+    for caught in ("ParameterNotDeclaredException", "ParameterException", "Exception"):
+        assert findings(behavior_workspace(tmp_path / caught, caught), ["ROS102"]) == []
+
+
+def test_a_read_in_a_try_that_catches_something_else_is_still_reported(tmp_path: Path) -> None:
+    root = behavior_workspace(tmp_path, "ParameterAlreadyDeclaredException")
+    (finding,) = findings(root, ["ROS102"])
+    assert finding[:3] == ("ROS102", "behavior_core/behavior_core/state_logger.py", 16)
+    assert "'log_folder' is never declared" in finding[3]

@@ -26,6 +26,8 @@ MAX_REACHED_TASKS = 2000
 SINGLE_THREADED = frozenset({"rclpy.executors.SingleThreadedExecutor"})
 MULTI_THREADED = frozenset({"rclpy.executors.MultiThreadedExecutor"})
 REENTRANT_GROUP = "rclpy.callback_groups.ReentrantCallbackGroup"
+#: What reading or setting an undeclared parameter raises.
+UNDECLARED = "rclpy.exceptions.ParameterNotDeclaredException"
 EXCLUSIVE_GROUP = "rclpy.callback_groups.MutuallyExclusiveCallbackGroup"
 
 
@@ -385,6 +387,7 @@ class UsageBuilder:
                 for site in sorted(open_)}
 
     def _parameter_uses(self) -> list[ParameterUse]:
+        handled = self._handled_uses()
         out = []
         for eff in self.effects:
             if eff.kind != "parameter_use":
@@ -393,8 +396,23 @@ class UsageBuilder:
             how = _single_const(eff.arg("how")) or ("get_parameters" if "names" in dict(eff.args)
                                                     else "get_parameter")
             out.append(ParameterUse(_loc(eff), how, _used_names(eff),
-                                    tuple(sorted(nodes)) if nodes else None))
+                                    tuple(sorted(nodes)) if nodes else None, _loc(eff) in handled))
         return out
+
+    def _handled_uses(self) -> frozenset[Location]:
+        """Where every run of a parameter call sits in a ``try`` that may catch
+        ``ParameterNotDeclaredException``: an ``except`` clause of it or a base class of it
+        (``ParameterException``, ``Exception``; a bare one), or of a class the analysis
+        cannot name (``?``), in the calling body itself."""
+        # rclpy's exceptions derive from ``Exception``, as every library's do.
+        catching = {*self.library.mro(UNDECLARED), "builtins.Exception", "builtins.BaseException", "?"}
+        handled: set[Location] = set()
+        unhandled: set[Location] = set()
+        for task in self.calls.tasks():
+            for site in self.calls.sites(task):
+                if any(eff.kind == "parameter_use" for eff in site.effects):
+                    (handled if catching.intersection(site.caught) else unhandled).add(_loc(site))
+        return frozenset(handled - unhandled)
 
     def _redeclarations(self) -> list[Redeclaration]:
         """Parameters one run of a body declares twice on the same node: two declarations
