@@ -490,3 +490,86 @@ def test_a_read_in_a_try_that_catches_something_else_is_still_reported(tmp_path:
     (finding,) = findings(root, ["ROS102"])
     assert finding[:3] == ("ROS102", "behavior_core/behavior_core/state_logger.py", 16)
     assert "'log_folder' is never declared" in finding[3]
+
+
+# -- ROS001: outputs for rviz ------------------------------------------------------------------------
+PLANNER = """
+    import rclpy
+    from nav_msgs.msg import Path
+    from rclpy.node import Node
+    from std_msgs.msg import String
+    from visualization_msgs.msg import Marker
+
+
+    class Planner(Node):
+        def __init__(self):
+            super().__init__('planner')
+            self.plan_pub = self.create_publisher(Path, 'plan', 10)
+            self.vis_pub = self.create_publisher({vis_type}, '{vis_topic}', 1)
+            self.create_subscription(String, 'goal_name', self.on_goal, 10)
+
+        def on_goal(self, msg):
+            self.plan_pub.publish(Path())
+            self.vis_pub.publish({vis_type}())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Planner())
+"""
+
+FOLLOWER = """
+    import rclpy
+    from nav_msgs.msg import Path
+    from rclpy.node import Node
+    from std_msgs.msg import String
+    from visualization_msgs.msg import Marker
+
+
+    class Follower(Node):
+        def __init__(self):
+            super().__init__('follower')
+            self.create_subscription(Path, 'plan', self.on_plan, 10)
+            self.goal_pub = self.create_publisher(String, 'goal_name', 10){vis_sub}
+
+        def on_plan(self, msg):
+            self.goal_pub.publish(String(data='dock'))
+
+        def on_marker(self, msg):
+            self.get_logger().info(f'marker {{msg.id}}')
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Follower())
+"""
+
+
+def planner_workspace(root: Path, vis_type: str, vis_topic: str, vis_sub: str = "") -> Path:
+    return write(root, {
+        "rover_nav/package.xml": PACKAGE_XML.format(name="rover_nav", build="ament_python"),
+        "rover_nav/setup.py": _setup("rover_nav", "'planner = rover_nav.planner:main', "
+                                                  "'follower = rover_nav.follower:main'"),
+        "rover_nav/rover_nav/__init__.py": "",
+        "rover_nav/rover_nav/planner.py": PLANNER.format(vis_type=vis_type, vis_topic=vis_topic),
+        "rover_nav/rover_nav/follower.py": FOLLOWER.format(vis_sub=vis_sub),
+    })
+
+
+def test_markers_for_rviz_are_an_interface(tmp_path: Path) -> None:
+    """mrover's ``/nav_vis`` (``Marker``), bitbots' ``/basic_controls/update`` (an interactive
+    marker server's): rviz draws them; nothing in the workspace subscribes."""
+    assert findings(planner_workspace(tmp_path, "Marker", "nav_vis"), ["ROS001"]) == []
+
+
+def test_another_unread_output_of_a_wired_node_is_still_reported(tmp_path: Path) -> None:
+    """The twin: the same output as a plain ``String`` is the node's odd one out."""
+    (finding,) = findings(planner_workspace(tmp_path, "String", "nav_vis"), ["ROS001"])
+    assert finding[:2] == ("ROS001", "rover_nav/rover_nav/planner.py")
+
+
+def test_a_misspelt_marker_topic_is_still_reported(tmp_path: Path) -> None:
+    """The twin: a workspace node draws the markers; the planner's name is a slip of its."""
+    vis_sub = "\n            self.create_subscription(Marker, 'nav_vis', self.on_marker, 1)"
+    (finding,) = findings(planner_workspace(tmp_path, "Marker", "nav_viss", vis_sub), ["ROS001"])
+    assert finding[:2] == ("ROS001", "rover_nav/rover_nav/planner.py") and "did you mean '/nav_vis'" in finding[3]
