@@ -45,7 +45,10 @@ class UndeclaredParameter(Rule):
     inside a `try` whose `except` clause may catch `ParameterNotDeclaredException`
     (it, `ParameterException`, `Exception`, a bare `except:`, or a class the
     analysis cannot name) is handled, not a bug; only a `try` in the calling
-    function itself counts. A declaration
+    function itself counts, and a test that provokes the exception inside
+    `pytest.raises(...)` or `assertRaises(...)` is not recognised. Otherwise
+    test code is judged like the product: a test whose node reads a parameter
+    it never declares fails with the exception. A declaration
     repeated by a loop is not detected, only two declarations on one path; one
     inside a `try` or an `if` is never counted as a repeat, nor are two on a node
     object the analysis knows only as one of several nodes (many connectors built
