@@ -573,3 +573,86 @@ def test_a_misspelt_marker_topic_is_still_reported(tmp_path: Path) -> None:
     vis_sub = "\n            self.create_subscription(Marker, 'nav_vis', self.on_marker, 1)"
     (finding,) = findings(planner_workspace(tmp_path, "Marker", "nav_viss", vis_sub), ["ROS001"])
     assert finding[:2] == ("ROS001", "rover_nav/rover_nav/planner.py") and "did you mean '/nav_vis'" in finding[3]
+
+
+# -- ROS002: a subclass's output heard by a handler it builds ------------------------------------------
+RL_NODE = """
+    import rclpy
+    from rclpy.node import Node
+
+
+    class RLNode(Node):
+        '''Base of the learned motion nodes: loads the policy, runs it on a timer.'''
+
+        def __init__(self, node_name):
+            super().__init__(node_name)
+            self.declare_parameter('model', 'walk.onnx')
+            self.create_timer(0.01, self.step)
+
+        def step(self):
+            pass
+
+
+    def create_main(cls):
+        def main():
+            rclpy.init()
+            rclpy.spin(cls())
+        return main
+"""
+
+WALK_NODE = """
+    from bitbots_msgs.msg import JointCommand
+
+    from handlers.gravity_handler import GravityHandler
+    from nodes.rl_node import RLNode, create_main
+
+
+    class WalkNode(RLNode):
+        def __init__(self):
+            super().__init__(node_name='walk_node')
+            self._joint_command_pub = self.create_publisher(JointCommand, 'walking_motor_goals', 10)
+            self._gravity_handler = GravityHandler(self)
+
+
+    main = create_main(WalkNode)
+"""
+
+GRAVITY_HANDLER = """
+    from {module} import {msg_type}
+
+
+    class GravityHandler:
+        def __init__(self, node):
+            self._node = node
+            self._data = None
+            self._sub = self._node.create_subscription({msg_type}, '{topic}', self._callback, 10)
+
+        def _callback(self, msg):
+            self._data = msg
+"""
+
+
+def walk_workspace(root: Path, module: str, msg_type: str, topic: str) -> Path:
+    return write(root, {
+        "rl_motion/package.xml": PACKAGE_XML.format(name="rl_motion", build="ament_python"),
+        "rl_motion/setup.py": _setup("rl_motion", "'walk = nodes.walk_node:main'"),
+        "rl_motion/nodes/__init__.py": "",
+        "rl_motion/nodes/rl_node.py": RL_NODE,
+        "rl_motion/nodes/walk_node.py": WALK_NODE,
+        "rl_motion/handlers/__init__.py": "",
+        "rl_motion/handlers/gravity_handler.py": GRAVITY_HANDLER.format(module=module, msg_type=msg_type,
+                                                                        topic=topic),
+    })
+
+
+def test_a_handler_hearing_the_subclass_output_is_a_loop(tmp_path: Path) -> None:
+    """bitbots' walk_node: the base class creates the node, the subclass publishes, a handler it
+    builds subscribes; the subclass's file is the node's own, so the ends are one program."""
+    root = walk_workspace(tmp_path, "bitbots_msgs.msg", "JointCommand", "walking_motor_goals")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS002"])] == [
+        ("ROS002", "rl_motion/handlers/gravity_handler.py")]
+
+
+def test_a_handler_hearing_another_topic_is_no_loop(tmp_path: Path) -> None:
+    root = walk_workspace(tmp_path, "sensor_msgs.msg", "Imu", "imu/data")
+    assert findings(root, ["ROS002"]) == []

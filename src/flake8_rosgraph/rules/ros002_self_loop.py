@@ -35,7 +35,8 @@ class SelfLoop(Rule):
     and each instance hears the others. A node class instantiated by several executables that each
     add entities from their own module (a reader executable publishing what a
     parser executable subscribes to, on one driver class) is not a loop: ends
-    created in two files other than the node's own are not compared.
+    created in two files other than the node's own (the file that creates it,
+    or that defines its class when a base class creates it) are not compared.
     A test fixture (a node created in a test module or under `test/`, as for
     ROS001) that publishes and subscribes one topic with one type is a test
     harness checking that its message goes through (or recording what the
@@ -115,7 +116,8 @@ def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:
     own entities from its own module (nmea_navsat_driver's serial reader
     publishes ``nmea_sentence`` and its topic driver subscribes to it, both on
     one ``Ros2NMEADriver`` class): two ends created in two different files,
-    neither of them the file that creates the node, are not a loop.
+    neither of them the node's own (the file that creates it, or that defines
+    its class: a subclass whose base calls ``super().__init__``), are not a loop.
     """
     files = {pub.location.path, sub.location.path}
-    return len(files) == 1 or node.location.path in files
+    return len(files) == 1 or node.location.path in files or node.cls_path in files
