@@ -656,3 +656,86 @@ def test_a_handler_hearing_the_subclass_output_is_a_loop(tmp_path: Path) -> None
 def test_a_handler_hearing_another_topic_is_no_loop(tmp_path: Path) -> None:
     root = walk_workspace(tmp_path, "sensor_msgs.msg", "Imu", "imu/data")
     assert findings(root, ["ROS002"]) == []
+
+
+# -- ROS004: a test's end is judged against the product it tests ---------------------------------------
+LED_STRIP = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    class LedStrip(Node):
+        def __init__(self):
+            super().__init__('led_strip')
+            self.create_subscription(String, '/led_strip/command', self.on_command, 10)
+            self.display = self.create_publisher(String, '/led_strip/display', 10)
+
+        def on_command(self, msg):
+            self.display.publish(msg)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(LedStrip())
+"""
+
+BEHAVIOURS = """
+    import std_msgs.msg as std_msgs
+
+
+    class FlashLedStrip:
+        '''A behaviour of the tree: the tree hands it its node in setup().'''
+
+        def __init__(self, colour, topic_name='/led_strip/command'):
+            self.colour = colour
+            self.topic_name = topic_name
+            self.node = None
+            self.publisher = None
+
+        def setup(self, **kwargs):
+            self.node = kwargs['node']
+            self.publisher = self.node.create_publisher(
+                msg_type=std_msgs.{msg_type}, topic=self.topic_name, qos_profile=10)
+
+        def update(self):
+            self.publisher.publish(std_msgs.{msg_type}(data={value}))
+"""
+
+LED_TEST = """
+    import rclpy
+
+    from led_tutorials.behaviours import FlashLedStrip
+
+
+    def test_flashing():
+        rclpy.init()
+        node = rclpy.create_node('tree')
+        flash = FlashLedStrip(colour='red')
+        flash.setup(node=node)
+        flash.update()
+        node.destroy_node()
+        rclpy.shutdown()
+"""
+
+
+def led_workspace(root: Path, msg_type: str, value: str) -> Path:
+    return write(root, {
+        "led_tutorials/package.xml": PACKAGE_XML.format(name="led_tutorials", build="ament_python"),
+        "led_tutorials/setup.py": _setup("led_tutorials", "'led-strip = led_tutorials.led_strip:main'"),
+        "led_tutorials/led_tutorials/__init__.py": "",
+        "led_tutorials/led_tutorials/led_strip.py": LED_STRIP,
+        "led_tutorials/led_tutorials/behaviours.py": BEHAVIOURS.format(msg_type=msg_type, value=value),
+        "led_tutorials/tests/test_led_strip.py": LED_TEST,
+    })
+
+
+def test_a_behaviour_run_by_a_test_is_judged_against_the_product(tmp_path: Path) -> None:
+    """py_trees_ros_tutorials: the tree's node exists only in a test, where the behaviour's
+    publisher meets the mock LED strip's subscription; one end each, so the product decides."""
+    (finding,) = findings(led_workspace(tmp_path, "Int32", "1"), ["ROS004"])
+    assert finding[:2] == ("ROS004", "led_tutorials/led_tutorials/behaviours.py")
+
+
+def test_a_behaviour_of_the_products_type_is_quiet(tmp_path: Path) -> None:
+    assert findings(led_workspace(tmp_path, "String", "'red'"), ["ROS004"]) == []
