@@ -42,6 +42,12 @@ class SelfLoop(Rule):
     harness checking that its message goes through (or recording what the
     system under test also hears), not a loop; a fixture whose subscription
     has another type than its publisher on the name is still reported.
+    A production node that publishes and subscribes one topic to hear the
+    other instances of itself (`ros2 doctor hello`, whose callback drops its
+    own messages by host name) is reported: the graph holds nothing that tells
+    it from a loop by mistake (both ends then have the same name and type, and
+    a single variable naming both is also how a copy-paste slip looks). List
+    such a topic in `--rosgraph-external-topics`.
 
     ## Example
     ```python
