@@ -7,10 +7,15 @@ from typing import Iterator
 from ..graph.model import PEER_KIND, Location, RosGraph, RosNode
 from ..launch.model import LaunchedNode
 from .base import Finding, Rule, RuleConfig
-from .exempt import ExemptNames
 from .fixtures import node_scope
 from .topics import Endpoint, EndpointIndex
 from .vocabulary import NAME_NOUN
+
+
+#: Topics every node joins whatever system it belongs to: the log, parameter events and the
+#: transform tree (a TransformListener hears every broadcaster). Using them ties no two nodes
+#: together; ``/clock`` does (a simulator and the nodes on its time), as does any other name.
+SHARED_BUSES = frozenset({"/rosout", "/parameter_events", "/tf", "/tf_static"})
 
 
 class DuplicateNodeName(Rule):
@@ -20,8 +25,9 @@ class DuplicateNodeName(Rule):
     (with what it includes), both created in one source file (one process),
     or talking to each other (one publishes a topic the other subscribes,
     serves a service or action the other calls: a system split over several
-    launch files still runs as one; infrastructure names such as `/tf_static`,
-    which every node may use, tie no two nodes together). The finding is reported at
+    launch files still runs as one; `/rosout`, `/parameter_events` and the
+    transform tree `/tf`, `/tf_static`, which every node joins whatever system it
+    belongs to, tie no two nodes together, while `/clock` does). The finding is reported at
     both sites, each with the other as related location: the creation site
     in code, or the launch action when a launch file sets the node's name
     (so one executable launched twice under one name is reported too).
@@ -78,8 +84,7 @@ class DuplicateNodeName(Rule):
         for node in graph.nodes:
             if node.fqn is not None:
                 groups[node.fqn].append(node)
-        together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1],
-                             ExemptNames.build(config.external_names))
+        together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
         for fqn in sorted(groups):
             yield from self._duplicates(fqn, groups[fqn], together)
         reported: dict[Location, Finding] = {}
@@ -139,10 +144,8 @@ class DuplicateNodeName(Rule):
 class _Together:
     """Which nodes of one name run together, from the launch systems, the files and the wiring."""
 
-    def __init__(self, graph: RosGraph, duplicated: list[str], exempt: ExemptNames) -> None:
+    def __init__(self, graph: RosGraph, duplicated: list[str]) -> None:
         wanted = set(duplicated)
-        #: Names every node may use (``/tf_static``, ``/rosout``): using them ties no two nodes together.
-        self._exempt = exempt
         self._systems: dict[int, list[str]] = defaultdict(list)
         self._named_at: dict[int, Location] = {}
         #: The launch action that starts a node, per launch file (the first, if several).
@@ -202,7 +205,7 @@ class _Together:
         for node in nodes:
             scope = node_scope(node)
             for entity in node.entities:
-                if entity.name is None or entity.kind not in PEER_KIND or entity.name in self._exempt:
+                if entity.name is None or entity.kind not in PEER_KIND or entity.name in SHARED_BUSES:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node:
