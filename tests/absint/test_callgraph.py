@@ -82,3 +82,52 @@ def test_a_body_that_may_end_without_return_is_noted(tmp_path):
     # shout('x') decides `if text:`: the path that falls off the end is never taken.
     assert known and not any(task in analysis.falls_off for task in known)
     assert fetch and not any(task in analysis.falls_off for task in fetch)
+
+
+def test_a_library_call_knows_what_the_excepts_around_it_catch(tmp_path):
+    """The ``except`` clauses of every ``try`` around a modelled call with effects, innermost
+    first, by qualified name; a bare ``except:`` catches ``BaseException``; a computed class
+    is ``?``; the handler's own body and the ``else`` are outside the ``try``."""
+    files = {"pkg/__init__.py": "", "pkg/params.py": """
+        from rclpy.exceptions import ParameterNotDeclaredException
+        import rclpy.exceptions
+
+        class LocalError(Exception):
+            pass
+
+        def errors():
+            return (KeyError,)
+
+        def read(node):
+            try:
+                try:
+                    node.get_parameter('a')
+                except (ParameterNotDeclaredException, LocalError):
+                    node.get_parameter('b')
+                else:
+                    node.get_parameter('c')
+            except rclpy.exceptions.ParameterException:
+                pass
+            except:
+                pass
+            try:
+                node.get_parameter('d')
+            except errors():
+                pass
+            node.get_parameter('e')
+
+        def main():
+            read(rclpy.create_node('n'))
+    """}
+    analysis = run(tmp_path, files, every_module_is_entry=True)
+    graph = analysis.call_graph()
+    [read] = graph.tasks_of(_function(analysis, "read"))
+    caught = [(s.line, s.caught) for s in graph.sites(read) if s.callee == ("lib", "rclpy.node.Node.get_parameter")]
+    assert caught == [
+        (14, ("rclpy.exceptions.ParameterNotDeclaredException", "LocalError",
+              "rclpy.exceptions.ParameterException", "builtins.BaseException")),
+        (16, ("rclpy.exceptions.ParameterException", "builtins.BaseException")),
+        (18, ("rclpy.exceptions.ParameterException", "builtins.BaseException")),
+        (24, ("?",)),
+        (27, ()),
+    ]

@@ -152,3 +152,22 @@ def test_a_launch_name_given_to_an_executable_of_two_nodes_renames_both():
     quiet = graph(node("broadcaster", pub("/tf_demo/pose"), path="demo/demo/nodes.py", line=12),
                   node("listener", sub("/tf_demo/pose"), path="demo/demo/nodes.py", line=40))
     assert codes(quiet, select=["ROS007"]) == []
+
+
+def test_the_transform_tree_and_the_log_tie_no_two_nodes_together():
+    """Every node joins ``/tf_static`` (a TransformListener hears every broadcaster) and
+    ``/rosout``: two alternative programs of one node name both using them are not one system
+    (mrover's navigation and its training project's)."""
+    tf = "tf2_msgs/msg/TFMessage"
+    g = graph(node("navigation", pub("/tf_static", type=tf), path="rover/nav.py"),
+              node("navigation", sub("/tf_static", type=tf), pub("/rosout"), path="starter/nav.py"))
+    assert codes(g, select=["ROS007"]) == []
+
+
+def test_a_simulator_and_a_node_on_its_clock_run_together():
+    """``/clock`` ties: the node on simulated time needs that simulator (bitbots' team_comm and
+    the MuJoCo simulation)."""
+    clock = "rosgraph_msgs/msg/Clock"
+    g = graph(node("sim_interface", pub("/clock", type=clock), path="sim/simulation.py"),
+              node("sim_interface", sub("/clock", type=clock), path="comm/team_comm.py"))
+    assert report(g, select=["ROS007"]) == ["ROS007 comm/team_comm.py:1", "ROS007 sim/simulation.py:1"]

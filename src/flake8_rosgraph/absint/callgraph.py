@@ -36,6 +36,11 @@ class CallSite:
     effects: tuple = ()
     #: The call expression, for messages only (never compared).
     node: ast.AST | None = field(default=None, compare=False, hash=False, repr=False)
+    #: For a modelled library call with effects: the exception classes the ``except``
+    #: clauses around it catch, innermost first, by qualified name (``builtins.BaseException``
+    #: for a bare ``except:``, ``?`` for a class the analysis cannot name) — what stops an
+    #: exception the call raises (a guarded ``get_parameter``).
+    caught: tuple[str, ...] = ()
 
     def arg(self, name: str) -> Value | None:
         for key, value in self.args:

@@ -189,7 +189,25 @@ class CallSemantics:
             return
         frame.calls[(id(node), callee)] = CallSite(
             frame.module.path, node.lineno, frame.module.column(node), callee,
-            self.conditional_here(), frame.guarded, args, effects, node)
+            self.conditional_here(), frame.guarded, args, effects, node,
+            self._caught() if effects and frame.catching else ())
+
+    def _caught(self) -> tuple[str, ...]:
+        """What the ``except`` clauses around the current operation catch (see
+        :attr:`.CallSite.caught`). Only names and tuples of names are evaluated: a clause
+        that computes its class (``except pick_error():``) is ``?``."""
+        out: list[str] = []
+        for handler in self.frame.catching:
+            if handler.type is None:
+                out.append("builtins.BaseException")
+                continue
+            written = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+            for expr in written:
+                value = self.eval(expr) if isinstance(expr, (ast.Name, ast.Attribute)) else TOP
+                names = [a.qualname if isinstance(a, Extern) else self.program.classes[a.cid].qualname
+                         for a in value if isinstance(a, (Extern, ClassAtom))] if not value.is_top else []
+                out.extend(names if names and len(names) == len(value.atoms) else ["?"])
+        return tuple(out)
 
     def conditional_here(self) -> bool:
         """Whether the current operation runs on some normal paths through the body only."""

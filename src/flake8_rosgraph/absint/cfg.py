@@ -58,6 +58,9 @@ class Block:
     ops: list = field(default_factory=list)
     succs: list[Edge] = field(default_factory=list)
     exc_succs: tuple[int, ...] = ()
+    #: The ``except`` clauses of every ``try`` around the block, innermost first: what an
+    #: exception raised here may be caught by.
+    catching: tuple[ast.ExceptHandler, ...] = ()
 
 
 @dataclass
@@ -112,13 +115,15 @@ class _Builder:
         self.blocks: dict[int, Block] = {}
         self.loops: list[tuple[int, int]] = []      # (continue target, break target)
         self.handlers: list[tuple[int, ...]] = []   # handler entries of enclosing trys
+        self.catching: tuple[ast.ExceptHandler, ...] = ()  # their except clauses, innermost first
         self.heads: set[int] = set()
         self.exit = -1
         self._temps = 0
 
     def new(self) -> int:
         bid = len(self.blocks)
-        self.blocks[bid] = Block(bid, exc_succs=self.handlers[-1] if self.handlers else ())
+        self.blocks[bid] = Block(bid, exc_succs=self.handlers[-1] if self.handlers else (),
+                                 catching=self.catching)
         return bid
 
     def link(self, src: int | None, dst: int, test: ast.expr | None = None,
@@ -252,10 +257,13 @@ class _Builder:
         entries = tuple(self.new() for _ in s.handlers)
         after = self.new()
         self.handlers.append(entries)
+        outer = self.catching
+        self.catching = tuple(s.handlers) + outer
         start = self.new()
         self.link(cur, start)
         end = self.body(s.body, start)
         self.handlers.pop()
+        self.catching = outer
         end = self.body(s.orelse, end)
         ends = [end]
         for entry, handler in zip(entries, s.handlers):

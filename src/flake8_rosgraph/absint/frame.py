@@ -22,6 +22,8 @@ class Frame:
     dominators: frozenset[int] = frozenset()
     block: int = 0
     guarded: bool = False  # the current block is inside a try with handlers
+    #: The except clauses of the trys around the current block, innermost first.
+    catching: tuple = ()
     env: Env = field(default_factory=dict)
     effects: dict = field(default_factory=dict)
     calls: dict = field(default_factory=dict)

@@ -152,6 +152,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             block = cfg.blocks[bid]
             frame.block = bid
             frame.guarded = bool(block.exc_succs)
+            frame.catching = block.catching
             frame.env = dict(states[bid])
             tested: tuple[ast.expr, Value] | None = None
             for op in block.ops:

@@ -208,11 +208,17 @@ class GraphBuilder:
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
         try:
-            graph.usage = build_usage(self.analysis, self._node_labels())
+            graph.usage = build_usage(self.analysis, self._node_labels(), self._shared_sites())
         except Exception as exc:  # a defect there must cost the misuse rules only, not the graph
             graph.diagnostics.append(Diagnostic("", 0, "rclpy usage facts not extracted: internal "
                                                        f"error: {type(exc).__name__}: {exc}", "error"))
         return graph
+
+    def _shared_sites(self) -> frozenset[str]:
+        """Node object sites that stand for several nodes: the analysis' bound on contexts
+        merged the objects of several creations (``Connector('a')``, ``Connector('b')``, … built
+        through one factory), so two calls on "the" object may be calls on two nodes."""
+        return frozenset(site for site, nodes in self.by_object.items() if len(nodes) > 1)
 
     def _node_labels(self) -> dict[str, str]:
         """Node object site -> how messages name it (its name(s), or its class)."""
@@ -248,7 +254,8 @@ class GraphBuilder:
                     if node is None:
                         node = self.nodes[key] = RosNode(
                             name, ns, location, _class_name(self.program, obj),
-                            conditional=eff.conditional, invalid=_node_problem(name, ns),
+                            conditional=eff.conditional, cls_path=_class_path(self.program, obj),
+                            invalid=_node_problem(name, ns),
                             local_overrides=cli.overrides, unseen_names=self._unseen_names(obj))
                     if cli.remaps:
                         self.remaps[id(node)] = cli.remaps
@@ -308,7 +315,7 @@ class GraphBuilder:
             node = self.nodes.get((location, None, None))
             if node is None:
                 node = self.nodes[(location, None, None)] = RosNode(
-                    None, None, location, klass.qualname, unresolved_base=base)
+                    None, None, location, klass.qualname, cls_path=klass.module.path, unresolved_base=base)
             self.by_object[obj.site] = [node]
 
     def _owners(self, eff: Effect) -> list[RosNode]:
@@ -470,6 +477,13 @@ def _name_template(name: Value, node: Value) -> tuple[tuple[str, str | None], ..
 def _class_name(program, obj: Obj) -> str | None:
     if isinstance(obj.cls, ClassAtom):
         return program.classes[obj.cls.cid].qualname
+    return None
+
+
+def _class_path(program, obj: Obj) -> str | None:
+    """The file defining ``obj``'s class, for a workspace class."""
+    if isinstance(obj.cls, ClassAtom):
+        return program.classes[obj.cls.cid].module.path
     return None
 
 

@@ -102,6 +102,9 @@ class RosNode:
     location: Location
     cls: str | None = None
     conditional: bool = False
+    #: The file that defines the node's class (``cls``), when it is a workspace class: the
+    #: creation site (``location``) is a base class's ``super().__init__`` for a subclass.
+    cls_path: str | None = None
     invalid: str | None = None
     entities: list[Entity] = field(default_factory=list)
     #: Where a launch file starts this node ({"file", "line", "package", "executable", …});

@@ -110,6 +110,10 @@ class ParameterUse:
     how: str                       # "get_parameter", "get_parameters", "set_parameters", …
     names: tuple[str, ...] | None
     nodes: tuple[str, ...] | None  # node object sites; None when unknown
+    #: Every run of the call sits in a ``try`` whose ``except`` may catch
+    #: ``ParameterNotDeclaredException`` (it, a base class, a bare ``except:``, or a class the
+    #: analysis cannot name): the code handles an undeclared parameter.
+    handled: bool = False
 
 
 @dataclass(frozen=True)

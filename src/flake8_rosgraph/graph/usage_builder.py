@@ -26,6 +26,8 @@ MAX_REACHED_TASKS = 2000
 SINGLE_THREADED = frozenset({"rclpy.executors.SingleThreadedExecutor"})
 MULTI_THREADED = frozenset({"rclpy.executors.MultiThreadedExecutor"})
 REENTRANT_GROUP = "rclpy.callback_groups.ReentrantCallbackGroup"
+#: What reading or setting an undeclared parameter raises.
+UNDECLARED = "rclpy.exceptions.ParameterNotDeclaredException"
 EXCLUSIVE_GROUP = "rclpy.callback_groups.MutuallyExclusiveCallbackGroup"
 
 
@@ -57,13 +59,16 @@ def _single_const(value: Value):
 class UsageBuilder:
     """Builds :class:`UsageFacts` from a finished analysis."""
 
-    def __init__(self, analysis: Analysis, node_labels: dict[str, str]) -> None:
+    def __init__(self, analysis: Analysis, node_labels: dict[str, str],
+                 shared_sites: frozenset[str] = frozenset()) -> None:
         self.analysis = analysis
         self.program = analysis.program
         self.library = analysis.library
         self.calls: CallGraph = analysis.call_graph()
         self.effects = analysis.all_effects()
         self.node_labels = node_labels
+        #: Node object sites that stand for several nodes (:meth:`.GraphBuilder._shared_sites`).
+        self.shared_sites = shared_sites
         self.partial_fids = self._partial_functions()
         self.entities = self._awaitable_entities()
         self.executors: dict[str, set[str]] = {}         # node site -> executor kinds
@@ -382,6 +387,7 @@ class UsageBuilder:
                 for site in sorted(open_)}
 
     def _parameter_uses(self) -> list[ParameterUse]:
+        handled = self._handled_uses()
         out = []
         for eff in self.effects:
             if eff.kind != "parameter_use":
@@ -390,8 +396,23 @@ class UsageBuilder:
             how = _single_const(eff.arg("how")) or ("get_parameters" if "names" in dict(eff.args)
                                                     else "get_parameter")
             out.append(ParameterUse(_loc(eff), how, _used_names(eff),
-                                    tuple(sorted(nodes)) if nodes else None))
+                                    tuple(sorted(nodes)) if nodes else None, _loc(eff) in handled))
         return out
+
+    def _handled_uses(self) -> frozenset[Location]:
+        """Where every run of a parameter call sits in a ``try`` that may catch
+        ``ParameterNotDeclaredException``: an ``except`` clause of it or a base class of it
+        (``ParameterException``, ``Exception``; a bare one), or of a class the analysis
+        cannot name (``?``), in the calling body itself."""
+        # rclpy's exceptions derive from ``Exception``, as every library's do.
+        catching = {*self.library.mro(UNDECLARED), "builtins.Exception", "builtins.BaseException", "?"}
+        handled: set[Location] = set()
+        unhandled: set[Location] = set()
+        for task in self.calls.tasks():
+            for site in self.calls.sites(task):
+                if any(eff.kind == "parameter_use" for eff in site.effects):
+                    (handled if catching.intersection(site.caught) else unhandled).add(_loc(site))
+        return frozenset(handled - unhandled)
 
     def _redeclarations(self) -> list[Redeclaration]:
         """Parameters one run of a body declares twice on the same node: two declarations
@@ -421,7 +442,9 @@ class UsageBuilder:
                     continue
                 name = _single_const(eff.arg("name"))
                 nodes = _obj_sites(eff.arg("node"))
-                if isinstance(name, str) and nodes is not None and len(nodes) == 1:
+                # "Declared again" needs one node: a site standing for several may be two of them.
+                if isinstance(name, str) and nodes is not None and len(nodes) == 1 \
+                        and not nodes & self.shared_sites:
                     items.append(((name, next(iter(nodes))), _loc(site)))
         first: dict[tuple[str, str], Location] = {}
         for key, location in sorted(items, key=lambda i: i[1]):
@@ -602,8 +625,9 @@ def _used_names(eff: Effect) -> tuple[str, ...] | None:
     return tuple(names)
 
 
-def build_usage(analysis: Analysis, node_labels: dict[str, str]) -> UsageFacts:
-    return UsageBuilder(analysis, node_labels).build()
+def build_usage(analysis: Analysis, node_labels: dict[str, str],
+                shared_sites: frozenset[str] = frozenset()) -> UsageFacts:
+    return UsageBuilder(analysis, node_labels, shared_sites).build()
 
 
 def _task_text(item: tuple[tuple, dict]) -> str:

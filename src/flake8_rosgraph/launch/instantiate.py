@@ -191,7 +191,7 @@ class Instantiator:
             entities.append(replace(entity, name=resolved, invalid=problem or entity.invalid,
                                     name_suffix=suffix))
         node = RosNode(name, namespace, code.location, code.cls,
-                       conditional=code.conditional or launched.conditional,
+                       conditional=code.conditional or launched.conditional, cls_path=code.cls_path,
                        invalid=code.invalid, entities=entities, language=code.language)
         node.launch = launch_info(launched)
         return Instance(launched, node, code, frozenset(hits), settings,

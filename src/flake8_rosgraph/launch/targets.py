@@ -27,7 +27,7 @@ from collections import deque
 from typing import Mapping, Sequence
 
 from ..absint.engine import Analysis
-from ..absint.values import Obj
+from ..absint.values import ClassAtom, Obj
 from ..graph.builder import _class_name
 from ..graph.model import Location
 from .model import ExecutableRef
@@ -141,11 +141,12 @@ class EntryReach:
                 foreign |= walked[3]
         return tuple(sorted(foreign - ends))
 
-    def _methods_of(self, class_names: set[str | None]) -> set[tuple]:
-        """The analysed tasks of the methods of the workspace classes named ``class_names``."""
+    def _methods_of(self, cids: set[int]) -> set[tuple]:
+        """The analysed tasks of the methods of the workspace classes ``cids`` — by identity,
+        not by name: a script and its copy (``scripts/x`` and ``scripts/x.py``), or two
+        packages, may each define a ``Navigation`` class, and one executable runs only its own."""
         program = self.analysis.program
-        fids = {f.fid for f in program.functions
-                if f.cls is not None and program.classes[f.cls].qualname in class_names}
+        fids = {f.fid for f in program.functions if f.cls is not None and f.cls in cids}
         return {task for task in self.analysis.effects if task[0] == "fn" and task[1] in fids}
 
     def _main_guarded(self, task: tuple) -> frozenset[int]:
@@ -172,6 +173,7 @@ class EntryReach:
         sites: set[Location] = set()
         open_sites: set[Location] = set()
         classes: set[tuple[Location, str | None]] = set()
+        cids: set[int] = set()  # the node classes, by identity: two modules may name a class alike
         ends: set[Location] = set()
         entry_reached = True
         while queue or entry_reached:
@@ -180,7 +182,7 @@ class EntryReach:
                 # creates run in this process too (as callbacks): a node they create is one of
                 # its nodes. Their ends stay every executable's of the class (module docstring).
                 entry_reached = False
-                methods = self._methods_of({cls for _, cls in classes}) - seen
+                methods = self._methods_of(cids) - seen
                 seen |= methods
                 queue.extend(sorted(methods, key=repr))
                 continue
@@ -192,8 +194,9 @@ class EntryReach:
                     continue
                 site = Location(eff.path, eff.line, eff.column)
                 sites.add(site)
-                classes.update((site, _class_name(self.analysis.program, obj))
-                               for obj in eff.arg("target") if isinstance(obj, Obj))
+                objects = [obj for obj in eff.arg("target") if isinstance(obj, Obj)]
+                classes.update((site, _class_name(self.analysis.program, obj)) for obj in objects)
+                cids.update(obj.cls.cid for obj in objects if isinstance(obj.cls, ClassAtom))
                 args = dict(eff.args)
                 if args.get("allow_undeclared") is not None and \
                         args["allow_undeclared"].consts() != [False]:

@@ -58,6 +58,11 @@ A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
 of its own launch system.
 
+* or the end's message type is made for a tool outside the workspace
+  (``visualization_msgs``: rviz draws the markers, and sends interactive markers'
+  feedback; :data:`.exempt.TOOL_MESSAGE_PACKAGES`). Such ends still count as the
+  node's outward ends below.
+
 * or most of the node's ends of this kind have no partner in the workspace:
   a node that feeds the workspace through one publisher and the world outside
   through several (a robot driver's ``/odom``, ``/battery``, ``/imu_wrist``,
@@ -93,7 +98,7 @@ from typing import ClassVar, Iterator
 from ..graph.model import PEER_KIND, Entity, RosGraph
 from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
-from .exempt import ExemptNames
+from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
 from .launch_context import under_any, unseen_code_names, unseen_remap_targets
 from .near_miss import NearMissFinder
@@ -149,7 +154,8 @@ class AbsenceRule(Rule):
         for endpoint in dangling:
             interface = (id(endpoint.node) not in wired
                          or id(endpoint.node) in mostly_outside
-                         or id(endpoint) in excused)
+                         or id(endpoint) in excused
+                         or for_a_tool(endpoint.entity.type))
             yield from self._report(endpoint, near_misses, interface, scopes, id(endpoint) in slips)
 
     def _dangles(self, endpoint: Endpoint, index: EndpointIndex, exempt: ExemptNames) -> bool:

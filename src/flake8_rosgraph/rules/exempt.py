@@ -32,6 +32,10 @@ _EXEMPT: tuple[tuple[str, str, str | None], ...] = (
                "subscribes", "rosgraph_msgs/msg/Clock"),
     ("/diagnostics", "aggregated by diagnostic_aggregator and shown by rqt_robot_monitor, both C++ tools",
      "diagnostic_msgs/msg/DiagnosticArray"),
+    ("/diagnostics_agg", "published by diagnostic_aggregator's aggregator_node (C++) from `/diagnostics`; "
+                         "rqt_robot_monitor and robot dashboards consume it", "diagnostic_msgs/msg/DiagnosticArray"),
+    ("/diagnostics_toplevel_state", "published by diagnostic_aggregator's aggregator_node (C++): the "
+                                    "worst level of all analyzers", "diagnostic_msgs/msg/DiagnosticStatus"),
     ("/robot_description", "published (latched) by robot_state_publisher from the URDF",
      "std_msgs/msg/String"),
     ("/joint_states", "joint_state_publisher or ros2_control's joint_state_broadcaster publish it, "
@@ -57,6 +61,19 @@ _EXEMPT: tuple[tuple[str, str, str | None], ...] = (
     ("/**/get_transition_graph", "lifecycle service every lifecycle node serves (also C++ ones)", None),
     ("/**/transition_event", "lifecycle topic every lifecycle node publishes (also C++ ones)", None),
 )
+#: Message packages made for tools outside any workspace, and the tool: an end of such a type
+#: with no partner here meets that tool (rviz draws markers and serves interactive markers'
+#: feedback), so it is taken for an interface — a slip of its name is still reported.
+TOOL_MESSAGE_PACKAGES: dict[str, str] = {
+    "visualization_msgs": "rviz (and Foxglove) display markers and interactive markers and send their feedback",
+}
+
+
+def for_a_tool(message_type: str | None) -> bool:
+    """Whether ``message_type`` (``pkg/msg/Name``) belongs to a package of :data:`TOOL_MESSAGE_PACKAGES`."""
+    return message_type is not None and message_type.split("/", 1)[0] in TOOL_MESSAGE_PACKAGES
+
+
 #: (pattern, why it is exempt), for the docs and the lookups.
 BUILTIN_EXEMPT: tuple[tuple[str, str], ...] = tuple((pattern, why) for pattern, why, _ in _EXEMPT)
 #: Infrastructure topics and the one type each carries.

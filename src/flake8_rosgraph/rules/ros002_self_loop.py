@@ -7,6 +7,7 @@ from typing import Iterator
 from ..graph.model import Entity, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
+from .fixtures import node_scope
 from .launch_context import in_package, launched_in_namespace, packages_maybe_namespaced
 from .vocabulary import related
 
@@ -34,7 +35,19 @@ class SelfLoop(Rule):
     and each instance hears the others. A node class instantiated by several executables that each
     add entities from their own module (a reader executable publishing what a
     parser executable subscribes to, on one driver class) is not a loop: ends
-    created in two files other than the node's own are not compared.
+    created in two files other than the node's own (the file that creates it,
+    or that defines its class when a base class creates it) are not compared.
+    A test fixture (a node created in a test module or under `test/`, as for
+    ROS001) that publishes and subscribes one topic with one type is a test
+    harness checking that its message goes through (or recording what the
+    system under test also hears), not a loop; a fixture whose subscription
+    has another type than its publisher on the name is still reported.
+    A production node that publishes and subscribes one topic to hear the
+    other instances of itself (`ros2 doctor hello`, whose callback drops its
+    own messages by host name) is reported: the graph holds nothing that tells
+    it from a loop by mistake (both ends then have the same name and type, and
+    a single variable naming both is also how a copy-paste slip looks). List
+    such a topic in `--rosgraph-external-topics`.
 
     ## Example
     ```python
@@ -67,6 +80,7 @@ class SelfLoop(Rule):
         namespaced = packages_maybe_namespaced(graph)
         for node in graph.nodes:
             instances = launched_in_namespace(node) or (node.launch is None and in_package(node, namespaced))
+            harness = node_scope(node) is not None
             published: dict[str, list[Entity]] = defaultdict(list)
             for pub in node.of_kind("publishers"):
                 # a partly known name (``param if launched else '/scan'``) is no evidence of a loop
@@ -77,8 +91,8 @@ class SelfLoop(Rule):
                     continue
                 if instances and _absolute(sub) and all(_absolute(p) for p in published[sub.name]):
                     continue  # one bus shared by the instances in their namespaces: each hears the others
-                pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)),
-                              key=lambda e: e.location)
+                pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)
+                               and not (harness and _same_type(p, sub))), key=lambda e: e.location)
                 if pubs:
                     message = (f"node '{node.fqn or '?'}' subscribes to topic '{sub.name}' that it publishes "
                                f"at {pubs[0].location.short()}")
@@ -90,6 +104,17 @@ def _absolute(entity: Entity) -> bool:
     return (entity.raw_name or "").startswith("/")
 
 
+def _same_type(pub: Entity, sub: Entity) -> bool:
+    """Whether the two ends may carry one message type (an unknown type may).
+
+    A test harness publishes a command and listens on the same topic to see
+    it go through the middleware (or to record what the system under test
+    also hears): both ends then have the topic's one type. A probe pointed by
+    mistake at the harness's own stimulus almost always has another type.
+    """
+    return pub.type is None or sub.type is None or pub.type == sub.type
+
+
 def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:
     """Whether ``pub`` and ``sub`` can belong to one running instance of ``node``.
 
@@ -97,7 +122,8 @@ def _same_program(node: RosNode, pub: Entity, sub: Entity) -> bool:
     own entities from its own module (nmea_navsat_driver's serial reader
     publishes ``nmea_sentence`` and its topic driver subscribes to it, both on
     one ``Ros2NMEADriver`` class): two ends created in two different files,
-    neither of them the file that creates the node, are not a loop.
+    neither of them the node's own (the file that creates it, or that defines
+    its class: a subclass whose base calls ``super().__init__``), are not a loop.
     """
     files = {pub.location.path, sub.location.path}
-    return len(files) == 1 or node.location.path in files
+    return len(files) == 1 or node.location.path in files or node.cls_path in files

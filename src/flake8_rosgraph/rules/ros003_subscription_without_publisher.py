@@ -30,8 +30,10 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     out*: a topic of a node whose other subscriptions are fed by the
     workspace. It stays quiet (unless a near name is published) when none
     of the node's subscriptions has a publisher here (a tool fed from
-    outside), when several nodes subscribe to the topic, or when the
-    workspace only subscribes within the topic's namespace (`/fmu/out/...`).
+    outside), when several nodes subscribe to the topic, when the
+    workspace only subscribes within the topic's namespace (`/fmu/out/...`),
+    or when its type is made for a tool (`visualization_msgs`: rviz sends
+    interactive markers' feedback).
     Infrastructure topics (`/rosout`, `/parameter_events`, `/tf`,
     `/tf_static`, `/clock`, `/diagnostics`, `/robot_description`,
     `/joint_states`, rviz tool topics such as `/initialpose` and

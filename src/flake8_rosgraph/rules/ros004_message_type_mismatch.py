@@ -34,7 +34,8 @@ class MessageTypeMismatch(Rule):
     working systems, such as the same demo written in C++ and in Python. Test
     fixtures (nodes in `test/` folders and `test_*.py` modules) are compared only
     with the fixtures of their own tests and the production ends of the package
-    they test, never with other packages. The
+    they test, never with other packages; there the product's ends give the
+    type the fixture's ends must have. The
     finding is reported
     at each endpoint whose type differs from the type most endpoints of the
     name use (on a tie, the publishers' or servers' type), since that is the
@@ -78,15 +79,22 @@ class MessageTypeMismatch(Rule):
                 for scope in sorted({ep.scope for ep in typed if ep.scope is not None}):
                     own = [ep for ep in typed if ep.scope == scope]
                     seen = [ep for ep in typed if ep.scope == scope or own[0].sees(ep)]
-                    yield from (f for f in self._mismatches(seen, producer)
+                    # A test is judged against the product it tests: the product's ends give the type.
+                    product = [ep for ep in seen if ep.scope is None]
+                    yield from (f for f in self._mismatches(seen, producer, product or seen)
                                 if any(f.location == ep.entity.location for ep in own))
 
-    def _mismatches(self, typed: list[Endpoint], producer: str) -> Iterator[Finding]:
+    def _mismatches(self, typed: list[Endpoint], producer: str,
+                    voters: list[Endpoint] | None = None) -> Iterator[Finding]:
+        """The ends of ``typed`` whose type differs from the reference type, the one most
+        ``voters`` (default: all of ``typed``) use."""
         counts = Counter(ep.entity.type for ep in typed)
         if len(counts) < 2:
             return
-        producer_counts = Counter(ep.entity.type for ep in typed if ep.entity.kind == producer)
-        reference = min(counts, key=lambda t: (-counts[t], -producer_counts[t], t))
+        voters = typed if voters is None else voters
+        votes = Counter(ep.entity.type for ep in voters)
+        producer_counts = Counter(ep.entity.type for ep in voters if ep.entity.kind == producer)
+        reference = min(votes, key=lambda t: (-votes[t], -producer_counts[t], t))
         agreeing = [ep for ep in typed if ep.entity.type == reference]
         # A node that also has an endpoint of the same role with the reference type picks one at run time
         # (``Twist if distro == 'humble' else TwistStamped``): it can be configured to agree.

@@ -12,6 +12,12 @@ from .topics import Endpoint, EndpointIndex
 from .vocabulary import NAME_NOUN
 
 
+#: Topics every node joins whatever system it belongs to: the log, parameter events and the
+#: transform tree (a TransformListener hears every broadcaster). Using them ties no two nodes
+#: together; ``/clock`` does (a simulator and the nodes on its time), as does any other name.
+SHARED_BUSES = frozenset({"/rosout", "/parameter_events", "/tf", "/tf_static"})
+
+
 class DuplicateNodeName(Rule):
     """## What it does
     Checks for two node creation sites that resolve to the same fully
@@ -19,7 +25,9 @@ class DuplicateNodeName(Rule):
     (with what it includes), both created in one source file (one process),
     or talking to each other (one publishes a topic the other subscribes,
     serves a service or action the other calls: a system split over several
-    launch files still runs as one). The finding is reported at
+    launch files still runs as one; `/rosout`, `/parameter_events` and the
+    transform tree `/tf`, `/tf_static`, which every node joins whatever system it
+    belongs to, tie no two nodes together, while `/clock` does). The finding is reported at
     both sites, each with the other as related location: the creation site
     in code, or the launch action when a launch file sets the node's name
     (so one executable launched twice under one name is reported too).
@@ -197,7 +205,7 @@ class _Together:
         for node in nodes:
             scope = node_scope(node)
             for entity in node.entities:
-                if entity.name is None or entity.kind not in PEER_KIND:
+                if entity.name is None or entity.kind not in PEER_KIND or entity.name in SHARED_BUSES:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node:

@@ -90,6 +90,9 @@ class MessageField(Rule):
     that attribute (`hasattr(msg, 'header')`, `getattr(msg, 'header', None)`)
     is not judged. A keyword the class does not have
     is ignored silently when field checks are off, and is still reported.
+    Test code (fixtures, pytest and unittest test classes) is judged like the
+    product: a missing field or a rejected value raises in a test just the same,
+    and the test then fails for a reason it does not test.
 
     ## Example
     ```python
