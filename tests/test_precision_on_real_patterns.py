@@ -6,19 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from test_recall_mechanisms import findings
-from test_workspace_discovery import PACKAGE_XML, write
-
-
-def _setup(name: str, scripts: str) -> str:
-    return f"""
-        from setuptools import find_packages, setup
-
-        setup(
-            name='{name}',
-            packages=find_packages(exclude=['test']),
-            entry_points={{'console_scripts': [{scripts}]}},
-        )
-    """
+from test_workspace_discovery import PACKAGE_XML, setup_py, write
 
 
 # -- ROS002: a test harness that publishes a command and listens to it ------------------------------
@@ -83,7 +71,7 @@ GEAR_NODE = """
 def gear_workspace(root: Path, sub_type: str) -> Path:
     return write(root, {
         "sim_check/package.xml": PACKAGE_XML.format(name="sim_check", build="ament_python"),
-        "sim_check/setup.py": _setup("sim_check", "'gear_reporter = sim_check.gear_reporter:main'"),
+        "sim_check/setup.py": setup_py("sim_check", "'gear_reporter = sim_check.gear_reporter:main'"),
         "sim_check/sim_check/__init__.py": "",
         "sim_check/sim_check/gear_reporter.py": GEAR_NODE,
         "sim_check/test/test_gear_command.py": GEAR_TEST.format(sub_type=sub_type),
@@ -242,12 +230,12 @@ def navigation_workspace(root: Path, topic: str) -> Path:
                                 role="subscription", topic=topic, rest="self.on_state, ")
     return write(root, {
         "rover/package.xml": PACKAGE_XML.format(name="rover", build="ament_python"),
-        "rover/setup.py": _setup("rover", "'nav = rover.nav:main'"),
+        "rover/setup.py": setup_py("rover", "'nav = rover.nav:main'"),
         "rover/rover/__init__.py": "",
         "rover/rover/nav.py": rover,
         "rover/launch/navigation.launch.py": NAV_LAUNCH.format(package="rover", executable="nav"),
         "starter/package.xml": PACKAGE_XML.format(name="starter", build="ament_python"),
-        "starter/setup.py": _setup("starter", "'navigation = starter.navigation:main'"),
+        "starter/setup.py": setup_py("starter", "'navigation = starter.navigation:main'"),
         "starter/starter/__init__.py": "",
         "starter/starter/navigation.py": starter,
         "starter/launch/starter.launch.py": NAV_LAUNCH.format(package="starter", executable="navigation"),
@@ -321,7 +309,7 @@ POWER = """
 def monitor_workspace(root: Path, topic: str) -> Path:
     return write(root, {
         "hcm/package.xml": PACKAGE_XML.format(name="hcm", build="ament_python"),
-        "hcm/setup.py": _setup("hcm", "'monitor = hcm.monitor:main', 'power = hcm.power:main'"),
+        "hcm/setup.py": setup_py("hcm", "'monitor = hcm.monitor:main', 'power = hcm.power:main'"),
         "hcm/hcm/__init__.py": "",
         "hcm/hcm/monitor.py": MONITOR.format(topic=topic),
         "hcm/hcm/power.py": POWER,
@@ -401,7 +389,7 @@ def services_workspace(root: Path, second: str, tools: bool = True) -> Path:
                                tools_import="\n    from perception.tools import make_tools" if tools else "")
     return write(root, {
         "perception/package.xml": PACKAGE_XML.format(name="perception", build="ament_python"),
-        "perception/setup.py": _setup("perception", "'services = perception.services:main'"),
+        "perception/setup.py": setup_py("perception", "'services = perception.services:main'"),
         "perception/perception/__init__.py": "",
         "perception/perception/connector.py": CONNECTOR,
         "perception/perception/agents.py": AGENTS,
@@ -470,7 +458,7 @@ BEHAVIOR = """
 def behavior_workspace(root: Path, caught: str) -> Path:
     return write(root, {
         "behavior_core/package.xml": PACKAGE_XML.format(name="behavior_core", build="ament_python"),
-        "behavior_core/setup.py": _setup("behavior_core", "'onboard = behavior_core.onboard:main'"),
+        "behavior_core/setup.py": setup_py("behavior_core", "'onboard = behavior_core.onboard:main'"),
         "behavior_core/behavior_core/__init__.py": "",
         "behavior_core/behavior_core/state_logger.py": STATE_LOGGER.format(caught=caught),
         "behavior_core/behavior_core/onboard.py": BEHAVIOR,
@@ -548,7 +536,7 @@ FOLLOWER = """
 def planner_workspace(root: Path, vis_type: str, vis_topic: str, vis_sub: str = "") -> Path:
     return write(root, {
         "rover_nav/package.xml": PACKAGE_XML.format(name="rover_nav", build="ament_python"),
-        "rover_nav/setup.py": _setup("rover_nav", "'planner = rover_nav.planner:main', "
+        "rover_nav/setup.py": setup_py("rover_nav", "'planner = rover_nav.planner:main', "
                                                   "'follower = rover_nav.follower:main'"),
         "rover_nav/rover_nav/__init__.py": "",
         "rover_nav/rover_nav/planner.py": PLANNER.format(vis_type=vis_type, vis_topic=vis_topic),
@@ -635,7 +623,7 @@ GRAVITY_HANDLER = """
 def walk_workspace(root: Path, module: str, msg_type: str, topic: str) -> Path:
     return write(root, {
         "rl_motion/package.xml": PACKAGE_XML.format(name="rl_motion", build="ament_python"),
-        "rl_motion/setup.py": _setup("rl_motion", "'walk = nodes.walk_node:main'"),
+        "rl_motion/setup.py": setup_py("rl_motion", "'walk = nodes.walk_node:main'"),
         "rl_motion/nodes/__init__.py": "",
         "rl_motion/nodes/rl_node.py": RL_NODE,
         "rl_motion/nodes/walk_node.py": WALK_NODE,
@@ -722,7 +710,7 @@ LED_TEST = """
 def led_workspace(root: Path, msg_type: str, value: str) -> Path:
     return write(root, {
         "led_tutorials/package.xml": PACKAGE_XML.format(name="led_tutorials", build="ament_python"),
-        "led_tutorials/setup.py": _setup("led_tutorials", "'led-strip = led_tutorials.led_strip:main'"),
+        "led_tutorials/setup.py": setup_py("led_tutorials", "'led-strip = led_tutorials.led_strip:main'"),
         "led_tutorials/led_tutorials/__init__.py": "",
         "led_tutorials/led_tutorials/led_strip.py": LED_STRIP,
         "led_tutorials/led_tutorials/behaviours.py": BEHAVIOURS.format(msg_type=msg_type, value=value),

@@ -14,25 +14,13 @@ from flake8_rosgraph.explain import explain
 from flake8_rosgraph.launch.api import judged_graph
 
 from test_recall_mechanisms import entities, explained, findings
-from test_workspace_discovery import PACKAGE_XML, write
-
-
-def _setup(name: str, scripts: str) -> str:
-    return f"""
-        from setuptools import find_packages, setup
-
-        setup(
-            name='{name}',
-            packages=find_packages(exclude=['test']),
-            entry_points={{'console_scripts': [{scripts}]}},
-        )
-    """
+from test_workspace_discovery import PACKAGE_XML, setup_py, write
 
 
 # -- generic classes: ``Base[T]`` as a base class and ``Connector[Msg](...)`` -----------------------
 CONNECTOR_FILES = {
     "agent_comm/package.xml": PACKAGE_XML.format(name="agent_comm", build="ament_python"),
-    "agent_comm/setup.py": _setup("agent_comm", "'agent = agent_comm.agent:main'"),
+    "agent_comm/setup.py": setup_py("agent_comm", "'agent = agent_comm.agent:main'"),
     "agent_comm/agent_comm/__init__.py": "",
     "agent_comm/agent_comm/base.py": """
         from typing import Generic, TypeVar
@@ -159,7 +147,7 @@ def test_a_class_whose_subscript_runs_code_is_not_an_alias(tmp_path: Path) -> No
 # -- a package module with a ``#!`` line, named like its package ------------------------------------
 CAMERA_FILES = {
     "ptz_camera/package.xml": PACKAGE_XML.format(name="ptz_camera", build="ament_python"),
-    "ptz_camera/setup.py": _setup("ptz_camera", "'ptz_camera_node = ptz_camera.ptz_camera_node:main'"),
+    "ptz_camera/setup.py": setup_py("ptz_camera", "'ptz_camera_node = ptz_camera.ptz_camera_node:main'"),
     "ptz_camera/ptz_camera/__init__.py": "",
     "ptz_camera/ptz_camera/ptz.py": """
         from std_msgs.msg import Float32
@@ -229,7 +217,7 @@ def test_a_package_module_with_a_shebang_still_imports_its_neighbour(tmp_path: P
 # -- unittest test cases: the runner instantiates them ----------------------------------------------
 FILTER_FILES = {
     "scan_filter/package.xml": PACKAGE_XML.format(name="scan_filter", build="ament_python"),
-    "scan_filter/setup.py": _setup("scan_filter", "'scan_filter = scan_filter.filter_node:main'"),
+    "scan_filter/setup.py": setup_py("scan_filter", "'scan_filter = scan_filter.filter_node:main'"),
     "scan_filter/scan_filter/__init__.py": "",
     "scan_filter/scan_filter/filter_node.py": """
         import rclpy
@@ -333,7 +321,7 @@ def test_a_class_with_test_methods_but_no_test_case_base_is_not_run(tmp_path: Pa
 # -- the workspace's own methods named like rclpy's ---------------------------------------------------
 API_FILES = {
     "speech/package.xml": PACKAGE_XML.format(name="speech", build="ament_python"),
-    "speech/setup.py": _setup("speech", "'speech = speech.app:main'"),
+    "speech/setup.py": setup_py("speech", "'speech = speech.app:main'"),
     "speech/speech/__init__.py": "",
     "speech/speech/topic_api.py": """
         from std_msgs.msg import String
@@ -389,7 +377,7 @@ def test_a_create_call_on_an_unknown_object_stays_a_site(tmp_path: Path) -> None
 # -- classes whose __init__ is built from their fields --------------------------------------------
 LIDAR_FILES = {
     "lidar_bringup/package.xml": PACKAGE_XML.format(name="lidar_bringup", build="ament_python"),
-    "lidar_bringup/setup.py": _setup("lidar_bringup", "'lidars = lidar_bringup.lidars:main'"),
+    "lidar_bringup/setup.py": setup_py("lidar_bringup", "'lidars = lidar_bringup.lidars:main'"),
     "lidar_bringup/lidar_bringup/__init__.py": "",
     "lidar_bringup/lidar_bringup/config.py": """
         from dataclasses import dataclass, field
@@ -475,7 +463,7 @@ def test_a_field_left_out_keeps_its_default_and_a_plain_class_is_unchanged(tmp_p
 
 TOOL_FILES = {
     "arm_tools/package.xml": PACKAGE_XML.format(name="arm_tools", build="ament_python"),
-    "arm_tools/setup.py": _setup("arm_tools", "'arm_agent = arm_tools.agent:main'"),
+    "arm_tools/setup.py": setup_py("arm_tools", "'arm_agent = arm_tools.agent:main'"),
     "arm_tools/arm_tools/__init__.py": "",
     "arm_tools/arm_tools/tools.py": """
         from agent_framework.tools import BaseTool
@@ -522,7 +510,7 @@ def test_keywords_naming_fields_of_a_framework_model_set_them(tmp_path: Path) ->
 # -- callable objects and classes with their own __new__ -------------------------------------------
 RELAY_FILES = {
     "topic_relay/package.xml": PACKAGE_XML.format(name="topic_relay", build="ament_python"),
-    "topic_relay/setup.py": _setup("topic_relay", "'relay = topic_relay.relay_node:main'"),
+    "topic_relay/setup.py": setup_py("topic_relay", "'relay = topic_relay.relay_node:main'"),
     "topic_relay/topic_relay/__init__.py": "",
     "topic_relay/topic_relay/functors.py": """
         from std_msgs.msg import String
@@ -643,7 +631,7 @@ def test_an_attribute_of_objects_some_unknown_is_the_same_on_every_run(tmp_path:
 # -- str() of a parameter's value, ros2cli's NodeStrategy.direct_node ---------------------------------
 PLAYER_FILES = {
     "archive_player/package.xml": PACKAGE_XML.format(name="archive_player", build="ament_python"),
-    "archive_player/setup.py": _setup("archive_player", "'player = archive_player.player:main'"),
+    "archive_player/setup.py": setup_py("archive_player", "'player = archive_player.player:main'"),
     "archive_player/archive_player/__init__.py": "",
     "archive_player/archive_player/player.py": """
         import rclpy
@@ -745,7 +733,7 @@ def test_the_direct_node_of_a_node_strategy_is_a_node(tmp_path: Path) -> None:
 # -- names read from a list parameter ------------------------------------------------------------------
 EXECUTOR_FILES = {
     "arm_bringup/package.xml": PACKAGE_XML.format(name="arm_bringup", build="ament_python"),
-    "arm_bringup/setup.py": _setup("arm_bringup", "'executor = arm_bringup.executor:main', "
+    "arm_bringup/setup.py": setup_py("arm_bringup", "'executor = arm_bringup.executor:main', "
                                                    "'cameras = arm_bringup.executor:cameras'"),
     "arm_bringup/arm_bringup/__init__.py": "",
     "arm_bringup/arm_bringup/executor.py": """
@@ -868,7 +856,7 @@ def test_an_xml_parameter_value_with_substitutions_is_what_launch_makes_of_it(tm
 def _gc_package(name: str, msg: str) -> dict[str, str]:
     return {
         f"{name}/package.xml": PACKAGE_XML.format(name=name, build="ament_python"),
-        f"{name}/setup.py": _setup(name, f"'{name} = {name}.bridge:main'"),
+        f"{name}/setup.py": setup_py(name, f"'{name} = {name}.bridge:main'"),
         f"{name}/{name}/__init__.py": "",
         f"{name}/{name}/bridge.py": f"""
             import rclpy
@@ -955,7 +943,7 @@ def test_a_test_class_with_an_init_is_not_collected(tmp_path: Path) -> None:
 # -- pytest's built-in request fixture ------------------------------------------------------------------
 REQUEST_FILES = {
     "chat_api/package.xml": PACKAGE_XML.format(name="chat_api", build="ament_python"),
-    "chat_api/setup.py": _setup("chat_api", ""),
+    "chat_api/setup.py": setup_py("chat_api", ""),
     "chat_api/chat_api/__init__.py": "",
     "chat_api/chat_api/api.py": """
         from std_msgs.msg import String

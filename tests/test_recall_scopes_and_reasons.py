@@ -18,7 +18,7 @@ from flake8_rosgraph.graph.builder import _entity_order
 from flake8_rosgraph.graph.model import Entity, Location
 
 from test_recall_mechanisms import entities
-from test_workspace_discovery import PACKAGE_XML, write
+from test_workspace_discovery import PACKAGE_XML, setup_py, write
 
 
 def reasons(root: Path) -> dict[tuple[str, int], tuple[str, tuple[str, ...]]]:
@@ -26,18 +26,6 @@ def reasons(root: Path) -> dict[tuple[str, int], tuple[str, tuple[str, ...]]]:
     graph, analyses = analyse(root)
     return {(e.site.path, e.site.line): (e.status, e.reasons)
             for e in explain(analyses, graph).explanations}
-
-
-def _setup(name: str, scripts: str) -> str:
-    return f"""
-        from setuptools import find_packages, setup
-
-        setup(
-            name='{name}',
-            packages=find_packages(exclude=['test']),
-            entry_points={{'console_scripts': [{scripts}]}},
-        )
-    """
 
 
 # -- a process scope: the node is made when the scope is entered ------------------------------
@@ -88,7 +76,7 @@ SCOPE = """
 
 SCOPED = {
     "scoped_apps/package.xml": PACKAGE_XML.format(name="scoped_apps", build="ament_python"),
-    "scoped_apps/setup.py": _setup("scoped_apps", "'talker = scoped_apps.talker:main', "
+    "scoped_apps/setup.py": setup_py("scoped_apps", "'talker = scoped_apps.talker:main', "
                                                   "'relay = scoped_apps.relay:main'"),
     "scoped_apps/scoped_apps/__init__.py": "",
     "scoped_apps/scoped_apps/scope.py": SCOPE,
@@ -185,7 +173,7 @@ def test_each_scope_call_keeps_its_own_node(tmp_path: Path) -> None:
 # -- explain: a branch only a superseded run took --------------------------------------------
 LOADER = {
     "model_loader/package.xml": PACKAGE_XML.format(name="model_loader", build="ament_python"),
-    "model_loader/setup.py": _setup("model_loader", "'loader = model_loader.loader_node:main'"),
+    "model_loader/setup.py": setup_py("model_loader", "'loader = model_loader.loader_node:main'"),
     "model_loader/model_loader/__init__.py": "",
     "model_loader/model_loader/loader_config.py": """
         ENABLE_MODEL_OPTIMIZER = False
@@ -252,7 +240,7 @@ def test_a_call_in_a_branch_the_flag_opens_is_in_the_graph(tmp_path: Path) -> No
 # -- explain: names built from attributes, and names a stopped analysis left unknown ----------
 LIFECYCLE = {
     "stack_composer/package.xml": PACKAGE_XML.format(name="stack_composer", build="ament_python"),
-    "stack_composer/setup.py": _setup("stack_composer", "'composer = stack_composer.composer:main'"),
+    "stack_composer/setup.py": setup_py("stack_composer", "'composer = stack_composer.composer:main'"),
     "stack_composer/stack_composer/__init__.py": "",
     "stack_composer/stack_composer/managed.py": """
         import rclpy
@@ -363,7 +351,7 @@ def test_a_call_a_stopped_analysis_never_reached_says_so(tmp_path: Path,
                 for topic in (unit_topic(2), unit_topic(5)):
                     process.node.create_subscription(String, topic, print, 10)
     """
-    files["scoped_apps/setup.py"] = _setup("scoped_apps", "'fleet = scoped_apps.fleet:main'")
+    files["scoped_apps/setup.py"] = setup_py("scoped_apps", "'fleet = scoped_apps.fleet:main'")
     root = write(tmp_path, files)
     assert reasons(root)[("scoped_apps/scoped_apps/fleet.py", 15)][0] == "complete"
     monkeypatch.setattr(engine, "ENTRY_TASK_RUNS", 9)
@@ -391,7 +379,7 @@ def test_entities_differing_only_in_a_template_default_sort() -> None:
 # -- enum members ------------------------------------------------------------------------------
 TELEOP = {
     "web_teleop/package.xml": PACKAGE_XML.format(name="web_teleop", build="ament_python"),
-    "web_teleop/setup.py": _setup("web_teleop", "'ik_control = web_teleop.ik_control:main'"),
+    "web_teleop/setup.py": setup_py("web_teleop", "'ik_control = web_teleop.ik_control:main'"),
     "web_teleop/web_teleop/__init__.py": "",
     "web_teleop/web_teleop/constants.py": """
         from enum import Enum
@@ -490,7 +478,7 @@ def test_enum_members_are_equal_only_to_themselves(tmp_path: Path) -> None:
 # -- len() of a list the caller wrote ----------------------------------------------------------
 HAL = {
     "hal_interfaces/package.xml": PACKAGE_XML.format(name="hal_interfaces", build="ament_python"),
-    "hal_interfaces/setup.py": _setup("hal_interfaces", "'vacuum_hal = hal_interfaces.hal:main'"),
+    "hal_interfaces/setup.py": setup_py("hal_interfaces", "'vacuum_hal = hal_interfaces.hal:main'"),
     "hal_interfaces/hal_interfaces/__init__.py": "",
     "hal_interfaces/hal_interfaces/bumper.py": """
         from gazebo_msgs.msg import ContactsState
@@ -568,7 +556,7 @@ def test_the_length_of_a_list_unseen_code_fills_stays_unknown(tmp_path: Path) ->
 # -- loops over written-out tables -----------------------------------------------------------
 AI_SERVER = {
     "ai_server/package.xml": PACKAGE_XML.format(name="ai_server", build="ament_python"),
-    "ai_server/setup.py": _setup("ai_server", "'ai_server = ai_server.server:main'"),
+    "ai_server/setup.py": setup_py("ai_server", "'ai_server = ai_server.server:main'"),
     "ai_server/ai_server/__init__.py": "",
     "ai_server/ai_server/topics.py": """
         from std_msgs.msg import Bool, String
@@ -715,7 +703,7 @@ def test_rows_from_zip_enumerate_and_comprehensions_stay_paired(tmp_path: Path) 
             rclpy.init()
             rclpy.spin(ArmBridge())
     """
-    files["ai_server/setup.py"] = _setup("ai_server", "'ai_server = ai_server.server:main', "
+    files["ai_server/setup.py"] = setup_py("ai_server", "'ai_server = ai_server.server:main', "
                                                       "'arms = ai_server.arms:main'")
     root = write(tmp_path, files)
     got = sorted((e.kind, e.name or "?", e.type) for node in analyse(root)[0].nodes
@@ -736,7 +724,7 @@ def test_rows_from_zip_enumerate_and_comprehensions_stay_paired(tmp_path: Path) 
 # -- property setters --------------------------------------------------------------------------
 SETTERS = {
     "scope_setters/package.xml": PACKAGE_XML.format(name="scope_setters", build="ament_python"),
-    "scope_setters/setup.py": _setup("scope_setters", "'relay = scope_setters.relay:main'"),
+    "scope_setters/setup.py": setup_py("scope_setters", "'relay = scope_setters.relay:main'"),
     "scope_setters/scope_setters/__init__.py": "",
     "scope_setters/scope_setters/scope.py": """
         class Scope:
@@ -800,7 +788,7 @@ def test_a_parameter_with_a_default_on_some_paths_says_so(tmp_path: Path) -> Non
     paths, not everywhere (muto agent's commands node)."""
     files = {
         "agent_commands/package.xml": PACKAGE_XML.format(name="agent_commands", build="ament_python"),
-        "agent_commands/setup.py": _setup("agent_commands", "'commands = agent_commands.commands:main'"),
+        "agent_commands/setup.py": setup_py("agent_commands", "'commands = agent_commands.commands:main'"),
         "agent_commands/agent_commands/__init__.py": "",
         "agent_commands/agent_commands/commands.py": """
             import sys

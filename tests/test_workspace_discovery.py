@@ -18,6 +18,20 @@ PACKAGE_XML = """<?xml version="1.0"?>
 <exec_depend>rclpy</exec_depend><export><build_type>{build}</build_type></export></package>
 """
 
+def setup_py(name: str, scripts: str) -> str:
+    """An ament_python package's ``setup.py`` (indented, as :func:`write` takes it) with these
+    ``console_scripts`` entries (``"'exe = pkg.module:main'"``, comma-separated)."""
+    return f"""
+        from setuptools import find_packages, setup
+
+        setup(
+            name='{name}',
+            packages=find_packages(exclude=['test']),
+            entry_points={{'console_scripts': [{scripts}]}},
+        )
+    """
+
+
 BASE = """
     from rclpy.node import Node
     from std_msgs.msg import String
