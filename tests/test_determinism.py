@@ -6,7 +6,7 @@ sorted order, once in reverse — and the tool is run under different
 ``PYTHONHASHSEED`` values, the second time with a shim that hands the tool
 every directory listing in a shuffled order (file systems differ in how
 creation order shows in ``readdir``; the shim makes the test independent of
-that). Graph JSON and DOT, ``check``'s JSON and its SARIF must be identical.
+that), and with the analysis in one process, then in several (:mod:`.forked`). Graph JSON and DOT, ``check``'s JSON and its SARIF must be identical.
 The graph output must also be identical from another root path and mention
 no absolute path of the machine.
 """
@@ -132,11 +132,13 @@ def tool(args: list[str], cwd: Path, hash_seed: str, shuffle_seed: str | None) -
     return done
 
 
-def outputs(root: Path, scratch: Path, hash_seed: str, shuffle_seed: str | None) -> dict[str, bytes]:
-    """Every machine-readable output of the tool on ``root`` (cache in ``scratch``, never shared)."""
+def outputs(root: Path, scratch: Path, hash_seed: str, shuffle_seed: str | None, jobs: str) -> dict[str, bytes]:
+    """Every machine-readable output of the tool on ``root`` (cache in ``scratch``, never shared),
+    its analysis using up to ``jobs`` processes."""
     out: dict[str, bytes] = {}
     for fmt in ("json", "dot"):
-        done = tool(["graph", ".", "--format", fmt, "--stubs", "stubs/broken.toml"], root, hash_seed, shuffle_seed)
+        done = tool(["graph", ".", "--format", fmt, "--stubs", "stubs/broken.toml", "--jobs", jobs],
+                    root, hash_seed, shuffle_seed)
         assert done.returncode == 0, done.stderr.decode(errors="replace")
         out[f"graph.{fmt}"] = done.stdout
         out[f"graph.{fmt}.stderr"] = done.stderr
@@ -145,7 +147,7 @@ def outputs(root: Path, scratch: Path, hash_seed: str, shuffle_seed: str | None)
         cache_dir = scratch / f"cache-{hash_seed}-{shuffle_seed}"
         sarif = scratch / f"out-{hash_seed}-{shuffle_seed}.sarif"
         done = tool(["check", ".", "--root", ".", "--format", "json", "--cache-dir", str(cache_dir),
-                     "--sarif", str(sarif)], root, hash_seed, shuffle_seed)
+                     "--sarif", str(sarif), "--jobs", jobs], root, hash_seed, shuffle_seed)
         assert done.returncode in (0, 1), done.stderr.decode(errors="replace")
         out["check.json"] = done.stdout
         out["check.sarif"] = sarif.read_bytes()
@@ -157,13 +159,13 @@ def runs(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
     base = tmp_path_factory.mktemp("determinism")
     root = base / "ws"
     build_workspace(root, reverse=False)
-    first = outputs(root, base, hash_seed="0", shuffle_seed=None)
+    first = outputs(root, base, hash_seed="0", shuffle_seed=None, jobs="1")
     shutil.rmtree(root)
     build_workspace(root, reverse=True)
-    second = outputs(root, base, hash_seed="4242", shuffle_seed="7")
+    second = outputs(root, base, hash_seed="4242", shuffle_seed="7", jobs="3")  # groups in 3 processes
     elsewhere = base / "somewhere" / "else" / "ws"
     build_workspace(elsewhere, reverse=True)
-    moved = outputs(elsewhere, base, hash_seed="99", shuffle_seed="3")
+    moved = outputs(elsewhere, base, hash_seed="99", shuffle_seed="3", jobs="2")
     return {"first": first, "second": second, "moved": moved, "root": root, "elsewhere": elsewhere}
 
 

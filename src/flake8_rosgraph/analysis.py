@@ -15,17 +15,21 @@ from __future__ import annotations
 import contextlib
 import gc
 import json
+import pickle
 import traceback
+from dataclasses import dataclass
 from importlib.resources import files
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable, Protocol, Sequence
 
+from . import forked
 from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
 from .escaping import escape_text
 from .graph.model import Diagnostic, RosGraph, RosNode, internal_error
 from .interfaces.catalogue import generated_class_identity
+from .launch.packages import Executable
 from .launch.targets import entry_key, runs_module
 from .metadata import WorkspaceMetadata, read_metadata
 from .options import Buffers
@@ -95,8 +99,8 @@ def _launch_systems(root: Path, graph: RosGraph, python: PythonFacts, metadata: 
 CppMemo = Callable[[Callable[[], tuple[list[RosNode], list[Diagnostic]]]], tuple[list[RosNode], list[Diagnostic]]]
 
 
-def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo: CppMemo | None) -> None:
-    """Add the workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
+def _cpp_nodes(root: Path, diagnostics: list[Diagnostic], memo: CppMemo | None) -> list[RosNode]:
+    """The workspace's rclcpp nodes (partner ends); a failure here must not cost the Python graph."""
     def read() -> tuple[list[RosNode], list[Diagnostic]]:
         from .cpp.to_graph import cpp_graph  # the parser loads only when the memo has no ends
         return cpp_graph(root)
@@ -105,9 +109,9 @@ def _cpp_nodes(root: Path, graph: RosGraph, diagnostics: list[Diagnostic], memo:
         nodes, cpp_diagnostics = memo(read) if memo is not None else read()
     except Exception as exc:
         diagnostics.append(internal_error("C++ sources not read", exc))
-        return
+        return []
     diagnostics.extend(cpp_diagnostics)
-    graph.nodes = sorted(graph.nodes + nodes, key=lambda n: (n.fqn or "", n.location, n.language))
+    return nodes
 
 
 def _interfaces(interface_dirs: Sequence[Path], graph: RosGraph, metadata: WorkspaceMetadata,
@@ -169,47 +173,114 @@ def analyse(root: Path, stub_files: Sequence[Path] = (),
 #: Keeps the workspace's metadata between runs: given how to read it, returns it (stored or read).
 MetadataMemo = Callable[[Callable[[], WorkspaceMetadata]], WorkspaceMetadata]
 
-#: Keeps the facts of a group of modules between runs: given what identifies the group's inputs
-#: and how to compute its facts, returns them (stored or computed, then stored).
-FactsMemo = Callable[[str, Callable[[], PythonFacts]], PythonFacts]
+
+class FactsMemo(Protocol):
+    """Keeps the facts of groups of modules between runs (:class:`.facts_cache.FactsStore`), each
+    under what identifies the group's inputs."""
+
+    def read(self, inputs: str) -> PythonFacts | None:
+        """The kept facts of the group with these ``inputs``, or ``None``."""
+
+    def write(self, inputs: str, facts: PythonFacts) -> None:
+        """Keep the facts computed for the group with these ``inputs``."""
 
 
-def _group_facts(program: Program, library: Callable[[], LibraryModel], metadata: WorkspaceMetadata,
-                 memo: FactsMemo | None,
-                 kept: list[Analysis] | None) -> PythonFacts:
-    """The facts of one group of modules (``program``), analysed on its own or kept from before;
-    an internal error costs this group's facts only."""
-    paths = {m.path for m in program.modules.values()}
-    executables = sorted((exe for package in metadata.packages.packages.values()
-                          for exe in package.executables.values()
-                          if exe.language == "python" and runs_module(exe, program.modules, paths)),
-                         key=entry_key)
-    framework = {c: base for c, base in metadata.registered.items() if c.rpartition(".")[0] in program.modules}
+@dataclass
+class _Group:
+    """One group of modules (:meth:`.Program.components`), with what its facts depend on
+    besides its files: the Python executables that run it and its classes frameworks build."""
 
-    def compute() -> PythonFacts:
-        analysis = Analysis(program, library(), framework_classes=framework)
-        analysis.run()
-        facts = facts_of(analysis, executables)
-        if kept is not None:
-            kept.append(analysis)
-        else:
-            analysis.close()  # frees the analysis by reference counting, not a later collection
+    program: Program
+    executables: list[Executable]
+    framework: dict[str, str]
+
+    @classmethod
+    def of(cls, program: Program, metadata: WorkspaceMetadata) -> _Group:
+        paths = {m.path for m in program.modules.values()}
+        executables = sorted((exe for package in metadata.packages.packages.values()
+                              for exe in package.executables.values()
+                              if exe.language == "python" and runs_module(exe, program.modules, paths)),
+                             key=entry_key)
+        framework = {c: base for c, base in metadata.registered.items()
+                     if c.rpartition(".")[0] in program.modules}
+        return cls(program, executables, framework)
+
+    def inputs(self) -> str:
+        """What identifies the group's facts: its modules' names, paths and contents, and the rest."""
+        return json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
+                            for m in self.program.modules.values()],
+                           sorted(self.framework.items()), [entry_key(exe) for exe in self.executables]])
+
+    def weight(self) -> int:
+        """About how much analysing it costs: its lines (known once parsed, else one per module)."""
+        return sum(m.parsed.body[-1].end_lineno or 1 if m.parsed is not None and m.parsed.body else 1
+                   for m in self.program.modules.values())
+
+    def facts(self, library: Callable[[], LibraryModel], memo: FactsMemo | None,
+              kept: list[Analysis] | None) -> PythonFacts:
+        """The group analysed on its own (its facts then kept by ``memo``); an internal error
+        costs this group's facts only."""
+        try:
+            analysis = Analysis(self.program, library(), framework_classes=self.framework)
+            analysis.run()
+            facts = facts_of(analysis, self.executables)
+            if kept is not None:
+                kept.append(analysis)
+            else:
+                analysis.close()  # frees the analysis by reference counting, not a later collection
+        except Exception as exc:
+            first = min((m.path for m in self.program.modules.values()), default="")
+            where = traceback.extract_tb(exc.__traceback__)[-1]
+            return PythonFacts(diagnostics=[Diagnostic(
+                first, 1, f"modules analysed with this one not analysed: internal error: "
+                          f"{type(exc).__name__}: {exc} (at {Path(where.filename).name}:{where.lineno})",
+                "error")])
+        if memo is not None:
+            memo.write(self.inputs(), facts)
         return facts
 
-    try:
-        if memo is None:
-            return compute()
-        inputs = json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
-                              for m in program.modules.values()],
-                             sorted(framework.items()), [entry_key(exe) for exe in executables]])
-        return memo(inputs, compute)
-    except Exception as exc:
-        first = min(paths, default="")
-        where = traceback.extract_tb(exc.__traceback__)[-1]
-        return PythonFacts(diagnostics=[Diagnostic(
-            first, 1, f"modules analysed with this one not analysed: internal error: "
-                      f"{type(exc).__name__}: {exc} (at {Path(where.filename).name}:{where.lineno})",
-            "error")])
+
+@dataclass
+class _GroupsFacts:
+    """The facts of every group: kept ones read at once, the others analysed — in forked
+    processes (:mod:`.forked`) while the caller goes on, where the run allows more than one."""
+
+    groups: list[_Group]
+    library: Callable[[], LibraryModel]
+    memo: FactsMemo | None
+    kept: list[Analysis] | None
+    found: list[PythonFacts | None]
+    running: forked.ForkedJobs | None = None
+
+    @classmethod
+    def start(cls, groups: list[_Group], library: Callable[[], LibraryModel], memo: FactsMemo | None,
+              kept: list[Analysis] | None) -> _GroupsFacts:
+        found = [memo.read(group.inputs()) if memo is not None else None for group in groups]
+        started = cls(groups, library, memo, kept, found)
+        missing = [index for index, facts in enumerate(found) if facts is None]
+        count = 1 if kept is not None else min(forked.allowed(), len(missing))  # --explain: analyses here
+        if count > 1:
+            library()  # loaded before the fork, once for every child
+            started.running = forked.ForkedJobs.start(
+                sorted(missing, key=lambda index: (-groups[index].weight(), index)), started._pickled, count)
+        return started
+
+    def _pickled(self, index: int) -> bytes | None:
+        """In a child: the facts of group ``index``, pickled for the parent (``None`` when they
+        cannot be: the parent analyses that group again)."""
+        facts = self.groups[index].facts(self.library, self.memo, None)
+        try:
+            return pickle.dumps(facts, protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # whatever pickling raises: the parent analyses the group itself
+            return None
+
+    def finish(self) -> list[PythonFacts]:
+        """Every group's facts, in the groups' order (whichever process computed them)."""
+        if self.running is not None:
+            for index, data in self.running.collect().items():
+                self.found[index] = pickle.loads(data)
+        return [facts if facts is not None else group.facts(self.library, self.memo, self.kept)
+                for group, facts in zip(self.groups, self.found)]
 
 
 def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequence[Path],
@@ -226,11 +297,13 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
                                    [root / rel for rel in metadata.python_files] if root.is_dir() else None)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
-        python = merged([_group_facts(program.part(names), library, metadata, facts_memo, kept)
-                         for names in program.components()])
+        groups = _GroupsFacts.start([_Group.of(program.part(names), metadata) for names in program.components()],
+                                    library, facts_memo, kept)
+        cpp = _cpp_nodes(root, diagnostics, cpp_memo)  # meanwhile, if groups run in other processes
+        python = merged(groups.finish())
         diagnostics.extend(python.diagnostics)
-        graph = RosGraph(nodes=python.nodes, usage=python.usage, messages=python.messages)
-        _cpp_nodes(root, graph, diagnostics, cpp_memo)
+        nodes = sorted(python.nodes + cpp, key=lambda n: (n.fqn or "", n.location, n.language))
+        graph = RosGraph(nodes=nodes, usage=python.usage, messages=python.messages)
         graph.systems = _launch_systems(root, graph, python, metadata, diagnostics)
         _interfaces(interface_dirs, graph, metadata, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback

@@ -713,7 +713,7 @@ def load_or_build(root: Path, settings: Settings, build: bool = True) -> Workspa
         metadata = _metadata_memo(cache_dir, secret, metadata_key(digests))
         folder = facts_cache.groups_dir(cache_dir) if _own_dir(cache_dir) else None
         groups = None if folder is None else \
-            facts_cache.facts_memo(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
+            facts_cache.FactsStore(folder, secret, facts_cache.context_key(tuple(settings.stub_files)))
         from .workspace import Outlines
         outlines = Outlines(_read_outlines(cache_dir, secret), digests.current) if groups is not None else None
         report = build_report(root, settings, cpp_ends=cpp_ends, groups=groups, metadata=metadata,
@@ -770,7 +770,7 @@ def _unsaved_report(root: Path, settings: Settings, buffers: Buffers) -> Workspa
         return build_report(root, settings, buffers)
     context = facts_cache.context_key(tuple(settings.stub_files))
     return build_report(root, settings, buffers,
-                        groups=facts_cache.facts_memo(folder, secret, context, store=False))
+                        groups=facts_cache.FactsStore(folder, secret, context, store=False))
 
 
 #: Per-process results, so that the many files of one run share one lookup.

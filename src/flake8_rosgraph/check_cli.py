@@ -68,12 +68,26 @@ def add_parser(subparsers: Any) -> None:
     parser.add_argument("--extend-select", metavar="CODES", help="code prefixes to report in addition")
     parser.add_argument("--ignore", metavar="CODES", help="comma-separated code prefixes not to report")
     parser.add_argument("--debug", action="store_true", help="re-raise internal errors (env ROSGRAPH_DEBUG)")
+    add_jobs_argument(parser)
     parser.add_argument("--exit-zero", action="store_true", help="exit 0 even when there are findings")
     parser.add_argument("--baseline", type=Path, metavar="FILE",
                         help="do not report the findings recorded in FILE (see --write-baseline)")
     parser.add_argument("--write-baseline", type=Path, metavar="FILE",
                         help="record the current findings in FILE (then adopt with --baseline FILE)")
     parser.set_defaults(run=run)
+
+
+def add_jobs_argument(parser: Any) -> None:
+    """``--jobs N``: the processes the analysis may use (groups of modules analysed side by side)."""
+    parser.add_argument("--jobs", "-j", type=_positive, metavar="N",
+                        help="processes the analysis may use (default: one per CPU)")
+
+
+def _positive(value: str) -> int:
+    number = int(value)
+    if number < 1:
+        raise ValueError(value)
+    return number
 
 
 def _codes(value: str | None) -> list[str]:

@@ -13,7 +13,7 @@ import sys
 import traceback
 from pathlib import Path
 
-from . import __version__, check_cli
+from . import __version__, check_cli, forked
 from .escaping import escape_text, json_safe
 from .options import TRUE_WORDS
 
@@ -168,6 +168,7 @@ def make_parser() -> argparse.ArgumentParser:
     graph.add_argument("--launch", metavar="FILE",
                        help="show only the system this launch file starts (names, namespaces and "
                             "remappings applied) instead of the code-level graph")
+    check_cli.add_jobs_argument(graph)
     graph.set_defaults(run=_graph)
     check_cli.add_parser(sub)
     rules = sub.add_parser("rules", help="list the rules: code, name, level, enabled by default")
@@ -186,7 +187,8 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as exc:
         return int(exc.code or 0) and 2
     try:
-        return args.run(args)
+        with forked.processes(getattr(args, "jobs", None) or forked.cores()):
+            return args.run(args)
     except BrokenPipeError:  # the reader went away (``| head``): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0

@@ -19,8 +19,8 @@ import hashlib
 import os
 import stat
 import time
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 from . import facts_json
 from .cache import _OWN_FILE, MAX_ENTRY_BYTES, read_signed, tool_fingerprint, write_signed
@@ -60,28 +60,40 @@ def context_key(stub_files: tuple[Path, ...]) -> str:
     return digest.hexdigest()
 
 
-def facts_memo(folder: Path, secret: bytes, context: str, store: bool = True
-               ) -> Callable[[str, Callable[[], PythonFacts]], PythonFacts]:
-    """A memo for :func:`.analysis.build_graph`: a group's facts read from ``folder``, or
-    computed and (with ``store``) written there."""
+@dataclass(frozen=True)
+class FactsStore:
+    """Groups' facts in ``folder``, for :func:`.analysis.build_graph`: read when kept, written
+    (with ``store``) when computed."""
 
-    def memo(inputs: str, compute: Callable[[], PythonFacts]) -> PythonFacts:
-        key = hashlib.sha256(f"{context}\0{inputs}".encode("utf-8", "surrogateescape")).hexdigest()
-        entry = folder / f"{key}.json"
-        kept = _read(entry, key, secret)
+    folder: Path
+    secret: bytes
+    context: str
+    store: bool = True
+
+    def read(self, inputs: str) -> PythonFacts | None:
+        """The kept facts of the group with these ``inputs``, or ``None``."""
+        key = self._key(inputs)
+        entry = self.folder / f"{key}.json"
+        kept = _read(entry, key, self.secret)
         if kept is not None:
             with contextlib.suppress(OSError):
                 os.utime(entry)  # recently used: kept by the pruning
-            return kept
-        facts = compute()
-        if store:
-            try:
-                write_signed(entry, {"key": key, "facts": facts_json.to_obj(facts)}, secret)
-            except facts_json.NotAFact:
-                pass  # a fact the format cannot hold: analysed again next time
-        return facts
+        return kept
 
-    return memo
+    def write(self, inputs: str, facts: PythonFacts) -> None:
+        """Keep the facts computed for the group with these ``inputs`` (safe from several
+        processes at once: entries are written atomically)."""
+        if not self.store:
+            return
+        key = self._key(inputs)
+        try:
+            write_signed(self.folder / f"{key}.json", {"key": key, "facts": facts_json.to_obj(facts)},
+                         self.secret)
+        except facts_json.NotAFact:
+            pass  # a fact the format cannot hold: analysed again next time
+
+    def _key(self, inputs: str) -> str:
+        return hashlib.sha256(f"{self.context}\0{inputs}".encode("utf-8", "surrogateescape")).hexdigest()
 
 
 def _read(entry: Path, key: str, secret: bytes) -> PythonFacts | None:

@@ -5,18 +5,20 @@ checker analysed the workspace there (as it does with ``-j1``), the first worker
 need the findings would analyse while every other worker waited on the cache lock
 for its first file: the analysis would sit on the critical path, alone on one core.
 
-Instead, during ``Manager.run_parallel`` the main process analyses in a thread it
-starts right after the pool has started its workers (so no worker inherits a
-half-done analysis or a held lock), while the workers check files; their checkers
-report nothing (:func:`deferred`). Once the pool is done, the main process adds each
-file's ROS results to the results the workers sent back — the same code, line,
-column and text the checker would have yielded, with the ``noqa`` line flake8's file
-processor gives — before flake8 filters and reports them as usual.
+Instead, during ``Manager.run_parallel`` the analysis runs beside the workers, while their
+checkers report nothing (:func:`deferred`). Where the cache can keep the report (as for
+``-j1`` below), a child forked before the pool starts analyses, using every core
+(:mod:`.forked`: groups of modules in processes of their own), and leaves the report in the
+cache; otherwise the main process analyses in a thread it starts right after the pool has
+started its workers (so no worker inherits a half-done analysis or a held lock). Once the
+pool is done, the main process adds each file's ROS results to the results the workers sent
+back — the same code, line, column and text the checker would have yielded, with the
+``noqa`` line flake8's file processor gives — before flake8 filters and reports them as usual.
 
 The analysis is the run's critical path: it takes longer than the workers' share of the
-checks, and with ``--jobs=auto`` there is one worker per core, so it competes with them for a
-core. Each worker therefore lowers its own priority (:data:`WORKER_NICENESS`) when it first
-defers a file to the main process; the analysis keeps its core and the run ends sooner, the
+checks, and with ``--jobs=auto`` there is one worker per core, so it competes with them for the
+cores. Each worker therefore lowers its own priority (:data:`WORKER_NICENESS`) when it first
+defers a file to the main process; the analysis keeps the cores and the run ends sooner, the
 workers using what the analysis leaves.
 
 Works with the fork, spawn and forkserver start methods (spawned workers learn of
@@ -25,8 +27,9 @@ the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 
 
 With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the run
 checks :data:`MIN_FILES_BESIDE` files or more, the machine has a second core and the cache can
-keep the report, a forked child process analyses meanwhile and leaves the report in the cache; the checkers report nothing, and once
-flake8 is done the main process reads the report and adds each file's results the same way.
+keep the report, a forked child process analyses meanwhile (with the cores flake8 leaves it)
+and leaves the report in the cache; the checkers report nothing, and once flake8 is done the
+main process reads the report and adds each file's results the same way.
 A cold or edited run then costs about the longer of the two instead of their sum. When the
 child could not leave a report (it died, or failed), the main process analyses itself: the
 results never depend on the child.
@@ -40,6 +43,8 @@ import os
 import signal
 import threading
 from typing import Any, Callable, Iterator
+
+from . import forked
 
 #: Set by the main process for the workers of its pool: "the ROS results are mine".
 DEFER_ENV = "ROSGRAPH_DEFERRED_TO"
@@ -55,6 +60,7 @@ WORKER_NICENESS = 5
 
 _deferring = False  # in the main process during run_parallel (forked workers inherit it)
 _yielded = False  # this worker process has lowered its priority
+_analysis_processes: int | None = None  # in a child analysing beside flake8's checks: its share
 
 Results = list  # of (line, column, text) as a checker yields them
 
@@ -104,7 +110,7 @@ def install(results_of: Callable[[str], Results], wanted: Callable[[], bool],
     def run_parallel(self: Any) -> Any:
         if not wanted():
             return original(self)
-        return _run_parallel(self, original, results_of)
+        return _run_parallel(self, original, results_of, beside)
 
     run_parallel._rosgraph_hook = True  # type: ignore[attr-defined]
     checker.Manager.run_parallel = run_parallel
@@ -139,70 +145,101 @@ class _Analysis:
             self.error = exc
 
 
-def _run_parallel(manager: Any, original: Callable[[Any], Any],
-                  results_of: Callable[[str], Results]) -> Any:
-    global _deferring
+def _run_parallel(manager: Any, original: Callable[[Any], Any], results_of: Callable[[str], Results],
+                  beside: Callable[[list[str]], bool]) -> Any:
     from flake8 import checker
 
-    analysis = _Analysis(list(_checked_files(manager)), results_of)
+    filenames = list(_checked_files(manager))
+    child = analysis = None
+    if threading.active_count() == 1 and beside(filenames):
+        child = _analyse_in_child(filenames, results_of, forked.cores())  # before the pool's threads
+    else:
+        analysis = _Analysis(filenames, results_of)
     make_pool = checker._try_initialize_processpool
 
     def pool_then_analysis(*args: Any, **kwargs: Any) -> Any:
         pool = make_pool(*args, **kwargs)
-        analysis.start()
+        if analysis is not None:
+            analysis.start()
         return pool
 
     previous = os.environ.get(DEFER_ENV)
     os.environ[DEFER_ENV] = str(os.getpid())
-    _deferring = True
     checker._try_initialize_processpool = pool_then_analysis
     try:
-        outcome = original(manager)
+        with _deferring_to(child):
+            outcome = original(manager)
     finally:
         checker._try_initialize_processpool = make_pool
-        _deferring = False
         if previous is None:
             os.environ.pop(DEFER_ENV, None)
         else:
             os.environ[DEFER_ENV] = previous
-    _add_results(manager, analysis.wait())
+    _add_results(manager, _results_after(child, filenames, results_of) if analysis is None else analysis.wait())
     return outcome
 
 
 def _run_serial_beside(manager: Any, original: Callable[[Any], Any], results_of: Callable[[str], Results],
                        filenames: list[str]) -> Any:
-    global _deferring
+    child = _analyse_in_child(filenames, results_of, forked.cores() - 1)  # one core checks the files
+    with _deferring_to(child):
+        outcome = original(manager)
+    _add_results(manager, _results_after(child, filenames, results_of))
+    return outcome
+
+
+def _analyse_in_child(filenames: list[str], results_of: Callable[[str], Results], processes: int) -> int:
+    """Fork a child that analyses the workspaces of ``filenames`` with up to ``processes``
+    processes (:mod:`.forked`), leaves the reports in the cache and never returns into flake8."""
+    global _analysis_processes
     child = os.fork()
-    if child == 0:  # the child analyses (the cache keeps the report) and never returns into flake8
+    if child == 0:
         status = 1
         try:
+            _analysis_processes = max(1, processes)
             for filename in filenames:
                 results_of(filename)
             status = 0
         finally:
             os._exit(status)
+    return child
+
+
+def _results_after(child: int, filenames: list[str], results_of: Callable[[str], Results]) -> dict[str, Results]:
+    """Once the child is done, each file's results: read from the cache it filled (or, when it
+    could not, analysed here: the results never depend on the child)."""
+    with contextlib.suppress(ChildProcessError):
+        os.waitpid(child, 0)
+    return {filename: results_of(filename) for filename in filenames}
+
+
+@contextlib.contextmanager
+def _deferring_to(child: int | None) -> Iterator[None]:
+    """flake8's checkers leave their ROS results to this process while the block runs (the
+    analysis runs in ``child``, or in a thread); an interrupted run stops the child."""
+    global _deferring
     _deferring = True
     try:
-        outcome = original(manager)
+        yield
     except BaseException:
-        with contextlib.suppress(OSError):
-            os.kill(child, signal.SIGTERM)
-            os.waitpid(child, 0)
+        _stop(child)
         raise
     finally:
         _deferring = False
-    with contextlib.suppress(ChildProcessError):
-        os.waitpid(child, 0)
-    _add_results(manager, {filename: results_of(filename) for filename in filenames})
-    return outcome
 
 
-def cores() -> int:
-    """The CPUs this process may run on."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):  # not on Linux
-        return os.cpu_count() or 1
+def _stop(child: int | None) -> None:
+    """flake8 was interrupted: the child's work is not wanted any more."""
+    if child is not None:
+        with contextlib.suppress(OSError):
+            os.kill(child, signal.SIGTERM)
+            os.waitpid(child, 0)
+
+
+def analysis_processes() -> int:
+    """The processes this process's analysis may use (:mod:`.forked`): every core, but the one
+    flake8 checks files on while a ``-j1`` run's child analyses beside it."""
+    return _analysis_processes or forked.cores()
 
 
 def _checked_files(manager: Any) -> Iterator[str]:

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
-from . import __version__, flake8_jobs
+from . import __version__, flake8_jobs, forked
 from .cache import WorkspaceReport, kept_state, start_run, workspace_report
 from .codes import RULE_CODES
 from .escaping import escape_text
@@ -188,7 +188,10 @@ def _file_report(run: _Run, filename: str) -> tuple[WorkspaceReport, Path, str] 
     path = Path(os.path.abspath(filename))
     root = _root_for(run, path)
     relative = _relative(path, root)
-    found = None if relative is None else (workspace_report(root, run.settings, buffers), root, relative)
+    found = None
+    if relative is not None:
+        with forked.processes(flake8_jobs.analysis_processes()):
+            found = (workspace_report(root, run.settings, buffers), root, relative)
     _LAST_FILE[:] = [run, (filename, buffers), found]
     return found
 
@@ -317,7 +320,7 @@ def _analyse_beside(filenames: list[str]) -> bool:
     them here); not for an editor's buffer, nor under ``--rosgraph-debug`` (a traceback
     belongs to the process the user runs)."""
     run = _RUN
-    if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or flake8_jobs.cores() < 2:
+    if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or forked.cores() < 2:
         return False
     roots: set[Path] = set()
     for filename in filenames:

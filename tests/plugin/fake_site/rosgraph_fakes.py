@@ -7,7 +7,8 @@ calls, one node per file; ``$FAKE_ROSGRAPH_DELAY`` seconds slow) and ``flake8_ro
 topic nobody subscribes, ROS003 for one nobody publishes, ROS002 for a file that
 subscribes to its own topic, ROS010 for a name that is not a literal). Real
 ``RULES`` metadata stays in place. A file containing ``FAKE_CRASH`` makes the
-analysis raise. Each analysis appends ``<pid> <parent pid> <root>`` to ``$FAKE_ROSGRAPH_LOG``.
+analysis raise. Each analysis appends ``<pid> <parent pid> <role> <root>`` to
+``$FAKE_ROSGRAPH_LOG``, the role ``worker`` in a process of flake8's pool, else ``-``.
 
 In-process tests call :func:`install`; subprocesses get it from the
 ``sitecustomize`` next to this file (put this directory on ``PYTHONPATH``), which
@@ -15,6 +16,7 @@ also reaches worker processes started by spawn or forkserver.
 """
 from __future__ import annotations
 
+import multiprocessing
 import os
 import re
 import sys
@@ -34,7 +36,8 @@ def build_graph(root, stub_files=(), interface_dirs=(), buffers=(), *_cache_part
     log = os.environ.get("FAKE_ROSGRAPH_LOG")
     if log:
         with open(log, "a", encoding="utf-8") as handle:
-            handle.write(f"{os.getpid()} {os.getppid()} {root}\n")
+            role = "worker" if multiprocessing.parent_process() is not None else "-"
+            handle.write(f"{os.getpid()} {os.getppid()} {role} {root}\n")
     time.sleep(float(os.environ.get("FAKE_ROSGRAPH_DELAY", "0")))
     graph = RosGraph()
     for path in sorted(root.rglob("*.py")):
