@@ -141,6 +141,16 @@ def test_one_process_unless_the_run_allows_more_and_no_other_thread_runs() -> No
     assert forked.allowed() == 1
 
 
+def test_no_more_processes_than_can_shorten_the_run() -> None:
+    with forked.processes(16):
+        assert forked.useful([5]) == 1  # one job: nothing to share
+        assert forked.useful([1] * 40) == forked.MAX_PROCESSES  # memory bounds the children
+        assert forked.useful([60, 20, 20, 20]) == 2  # the heaviest job takes half the run anyway
+        assert forked.useful([10, 10, 10]) == 3
+    with forked.processes(2):
+        assert forked.useful([10, 10, 10]) == 2
+
+
 def _graph_json(root: Path, processes: int) -> dict:
     with forked.processes(processes):
         return graph_to_json_obj(build_graph(root))

@@ -258,7 +258,8 @@ class _GroupsFacts:
         found = [memo.read(group.inputs()) if memo is not None else None for group in groups]
         started = cls(groups, library, memo, kept, found)
         missing = [index for index, facts in enumerate(found) if facts is None]
-        count = 1 if kept is not None else min(forked.allowed(), len(missing))  # --explain: analyses here
+        # --explain reads the analyses themselves: they run here
+        count = 1 if kept is not None else forked.useful([groups[index].weight() for index in missing])
         if count > 1:
             library()  # loaded before the fork, once for every child
             started.running = forked.ForkedJobs.start(

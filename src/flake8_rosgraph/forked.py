@@ -32,6 +32,10 @@ _JOB = struct.Struct("<I")
 #: Each result is framed as (job index, length), then its bytes.
 _FRAME = struct.Struct("<IQ")
 
+#: Children at most, however many cores: each holds an analysis of its own beside its
+#: copy-on-write view of the parent's memory.
+MAX_PROCESSES = 8
+
 _allowed = 1
 
 
@@ -54,6 +58,16 @@ def allowed() -> int:
     if _allowed < 2 or not hasattr(os, "fork") or threading.active_count() > 1:
         return 1
     return _allowed
+
+
+def useful(weights: Sequence[int]) -> int:
+    """How many processes can shorten jobs of these ``weights`` (costs in any unit): within
+    :func:`allowed` and :data:`MAX_PROCESSES`, one per job at most, and no more than the total
+    weight over the heaviest job's (that job bounds the run, however many processes help)."""
+    if len(weights) < 2:
+        return 1
+    balance = -(-sum(weights) // max(max(weights), 1))
+    return max(1, min(allowed(), len(weights), balance, MAX_PROCESSES))
 
 
 def cores() -> int:
