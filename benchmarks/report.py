@@ -139,6 +139,7 @@ def workspace_targets(summaries: dict[str, Summary]) -> list[Target]:
         Target("--jobs=auto cold ÷ --jobs=auto without (wall)", _ratio(summaries, "cold-auto", "flake8-auto"),
                1.20, "×", None),
         ratio_target("graph command ÷ ros2inspector graph (peer)", "graph", "peer-graph", 1.00),
+        ratio_target("graph command --jobs 1 ÷ ros2inspector graph (peer)", "graph-1", "peer-graph", 1.00),
     ]
 
 

@@ -58,7 +58,7 @@ def workspace_steps(bench: WorkspaceBench, with_plugin: bool, peer: str | None) 
     steps.append(bench.flake8_without_auto())
     if with_plugin:
         steps.append(bench.flake8_cold_auto())
-    return steps + [bench.graph()] + ([bench.peer_graph(peer)] if peer else [])
+    return steps + [bench.graph(), bench.graph(jobs=1)] + ([bench.peer_graph(peer)] if peer else [])
 
 
 def summary_obj(summary: Summary, result: str) -> dict[str, object]:

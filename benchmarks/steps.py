@@ -236,10 +236,14 @@ class WorkspaceBench:
             else ("precommit-without", "pre-commit: flake8 without plugin on the edited file")
         return Step(key, label, measure, _count_reported)
 
-    def graph(self) -> Step:
-        return Step("graph", "graph command (--format json)",
+    def graph(self, jobs: int | None = None) -> Step:
+        """The ``graph`` command: with every core (its default), or with ``jobs`` processes."""
+        more = [] if jobs is None else ["--jobs", str(jobs)]
+        key, label = ("graph", "graph command (--format json)") if jobs is None else \
+            (f"graph-{jobs}", f"graph command (--format json --jobs {jobs})")
+        return Step(key, label,
                     lambda _: run_command([self.python, "-m", "flake8_rosgraph", "graph", ".",
-                                           "--format", "json"], self.root, self.env),
+                                           "--format", "json", *more], self.root, self.env),
                     _describe_graph)
 
     def peer_graph(self, peer: str) -> Step:

@@ -98,20 +98,21 @@ def test_run_prints_the_table_and_leaves_the_workspace_alone(tmp_path: Path) -> 
     assert "| topic renamed in a leaf module ÷ flake8 without |" in table
     assert "| pre-commit on the edited file (wall s) |" in table
     assert "| graph command ÷ ros2inspector graph (peer) |" in table
+    assert "| graph command --jobs 1 ÷ ros2inspector graph (peer) |" in table
     assert re.search(r"^\d{4}-\d\d-\d\d \d\d:\d\d UTC; machine: ", table, re.MULTILINE)
 
     data = json.loads(out.read_text())
     steps = data["workspace"]["steps"]
     assert list(steps) == ["startup", "ast", "pyflakes", "flake8", "cold", "warm", "changed", "renamed",
-                           "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph", "peer-graph"]
+                           "precommit-without", "precommit", "flake8-auto", "cold-auto", "graph", "graph-1", "peer-graph"]
     assert steps["renamed"]["result"].endswith("misspelt 'chatter' in src/chat/chat/listener.py:9")
-    assert steps["graph"]["result"] == "2 nodes, 0 diagnostics"
+    assert steps["graph"]["result"] == steps["graph-1"]["result"] == "2 nodes, 0 diagnostics"
     assert steps["peer-graph"]["result"] == "3 nodes and topics, 1 edges"
     # The subscription to 'unheard' has no publisher: the plugin ran and reported in every plugin row,
     # and the baseline did not.
     ros_reported = {key: int(re.search(r"(\d+) ROS", step["result"]).group(1))
                     for key, step in steps.items()
-                    if key not in ("startup", "ast", "pyflakes", "graph", "peer-graph")}
+                    if key not in ("startup", "ast", "pyflakes", "graph", "graph-1", "peer-graph")}
     assert ros_reported["flake8"] == ros_reported["flake8-auto"] == 0
     assert ros_reported["cold"] > 0
     assert ros_reported["cold"] == ros_reported["warm"] == ros_reported["changed"] == ros_reported["cold-auto"]
