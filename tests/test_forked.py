@@ -126,6 +126,15 @@ def test_a_child_that_dies_loses_only_the_job_it_was_on() -> None:
     assert len(results) >= 4  # the surviving child went on with the queue
 
 
+def _no_process(*_args: object) -> int:
+    raise BlockingIOError(11, "Resource temporarily unavailable")  # what fork raises at a process limit
+
+
+def test_without_processes_to_be_had_every_job_is_left_to_the_caller(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(os, "fork", _no_process)
+    assert forked.ForkedJobs.start(list(range(5)), lambda job: b"done", 2).collect() == {}
+
+
 def test_one_process_unless_the_run_allows_more_and_no_other_thread_runs() -> None:
     assert forked.allowed() == 1  # nobody said
     release = threading.Event()
@@ -187,6 +196,13 @@ def test_a_group_whose_child_died_is_analysed_by_the_parent(workspace: Path,
 
     monkeypatch.setattr(analysis._Group, "facts", dies_in_a_child)
     assert _graph_json(workspace, 2) == alone
+
+
+def test_a_run_that_can_have_no_process_analyses_every_group_itself(workspace: Path,
+                                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    alone = _graph_json(workspace, 1)
+    monkeypatch.setattr(os, "fork", _no_process)
+    assert _graph_json(workspace, 3) == alone
 
 
 def test_children_keep_the_groups_they_analysed_for_the_next_run(workspace: Path, tmp_path: Path) -> None:

@@ -98,20 +98,20 @@ class ForkedJobs:
         each job once; ``work`` returns the job's result, or ``None`` for one to leave to the
         caller. The caller must have checked :func:`allowed`."""
         jobs = cls()
-        read_end, write_end = os.pipe()
+        try:
+            read_end, write_end = os.pipe()
+        except OSError:  # no descriptors left: every job is left to the caller
+            return jobs
         try:
             for _ in range(count):
-                results = tempfile.TemporaryFile()
-                fd = os.dup(results.fileno())
-                results.close()
-                pid = os.fork()
-                if pid == 0:
-                    _child(read_end, write_end, fd, work)  # never returns
-                jobs.children.append(_Child(pid, fd))
+                child = _fork(read_end, write_end, work)
+                if child is None:
+                    break  # no more processes to be had: those forked share the queue
+                jobs.children.append(child)
             os.close(read_end)
             read_end = -1
-            for job in order:
-                os.write(write_end, _JOB.pack(job))
+            if jobs.children:
+                _queue(write_end, order)
         except BaseException:
             jobs.stop()
             raise
@@ -150,6 +150,34 @@ class ForkedJobs:
             with contextlib.suppress(OSError):
                 os.close(child.results)
         self.children = []
+
+
+def _fork(queue: int, queue_writer: int, work: Callable[[int], bytes | None]) -> _Child | None:
+    """A child taking jobs from ``queue``; ``None`` when no process can be had (a limit on
+    processes or memory): what no child does is left to the caller."""
+    try:
+        with tempfile.TemporaryFile() as results:
+            fd = os.dup(results.fileno())
+    except OSError:
+        return None
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(fd)
+        return None
+    if pid == 0:
+        _child(queue, queue_writer, fd, work)  # never returns
+    return _Child(pid, fd)
+
+
+def _queue(fd: int, order: Sequence[int]) -> None:
+    """Queue the jobs; once every child is gone (the pipe has no reader) the rest stays unqueued,
+    left to the caller."""
+    try:
+        for job in order:
+            os.write(fd, _JOB.pack(job))
+    except BrokenPipeError:
+        pass
 
 
 def _child(queue: int, queue_writer: int, results: int, work: Callable[[int], bytes | None]) -> None:
