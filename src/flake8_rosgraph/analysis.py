@@ -5,10 +5,12 @@ the tests.  It never raises: unreadable files, broken stubs, budget exhaustion a
 even internal errors become diagnostics on the returned graph.
 
 The Python modules are analysed in groups that import nothing from one another
-(:meth:`.Program.components`), each group on its own; what the graph needs is read
-off each group's analysis (:mod:`.python_facts`) — or taken from the cache for a group
-whose files did not change — and the groups' facts are merged before the C++ ends,
-launch systems and interface definitions join them.
+(:meth:`.Program.components`), each group on its own — side by side in forked processes
+where the run allows more than one (:mod:`.forked`), while this process reads the C++
+sources; what the graph needs is read off each group's analysis (:mod:`.python_facts`) — or
+taken from the cache for a group whose files did not change — and the groups' facts are
+merged, in the groups' order, before the C++ ends, launch systems and interface definitions
+join them.
 """
 from __future__ import annotations
 
