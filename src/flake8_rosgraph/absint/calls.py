@@ -807,8 +807,8 @@ def _known_length(value: Value) -> Value:
     """``len(value)`` where every possibility has a known length: a sequence or dict whose
     items are listed (``for i in range(len(self.topics))`` over a list the caller wrote);
     not an empty list or dict, which unseen code may fill (as its truth decides nothing)."""
-    if value.is_top or value.is_bottom:
-        return TOP
+    if value.is_top or value.is_bottom or value.soft or value.origin is not None:
+        return TOP  # a default's length, not the run's (a parameter's list may be longer)
     lengths = []
     for atom in value:
         if isinstance(atom, (Seq, DictAtom)) and not may_be_filled_elsewhere(atom):
