@@ -411,7 +411,10 @@ class Program:
                     scope.bound.add(node.target.id)
                 todo += [(c, scope, prefix, fid, cid) for c in _child_nodes(node)]
             stack.extend(reversed(todo))
-        mod.globals = frozenset(top.bound - top.glob)
+        # A ``global x`` at module level declares nothing; a function's ``global x`` that
+        # assigns ``x`` binds a module global (``global node`` then ``node = Node(...)`` in
+        # ``main``, read by the module's callbacks).
+        mod.globals = frozenset(top.bound.union(*(sc.glob & sc.bound for sc in scopes)))
         for sc in scopes:
             func = self.functions[sc.fid]
             func.locals = frozenset(sc.bound - sc.glob - sc.nonloc)
