@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Iterator
 
 from .callgraph import CallSite
-from .containers import may_be_filled_elsewhere
+from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
 from .fixtures import is_test_class, test_class_calls
 from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
@@ -68,11 +68,27 @@ class CallSemantics:
         return out
 
     def _escape(self, args: "Args") -> None:
-        """Callables passed to unknown code may be called by it: analyse them as entries."""
+        """Callables passed to unknown code may be called by it: analyse them as entries.
+        So may those inside a list, tuple or dict passed to it (a table of handlers, the
+        namespace ``type(name, bases, ns)`` builds a class from)."""
         for value in list(args.pos) + list(args.kw.values()):
-            for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
-                    self.schedule_callback(atom)
+            self.escape_value(value)
+
+    def escape_value(self, value: Value) -> None:
+        """Analyse the callables in ``value`` (and in the containers it holds) as entries:
+        unknown code receives it."""
+        for atom in value:
+            if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
+                self.schedule_callback(atom)
+            elif isinstance(atom, Seq):
+                for item in atom.items:
+                    self.escape_value(item)
+            elif isinstance(atom, Coll):
+                self.escape_value(atom.elem)
+            elif isinstance(atom, DictAtom):
+                for key, item in atom.items:
+                    self.escape_value(key)
+                    self.escape_value(item)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
         if isinstance(atom, FuncAtom):
@@ -728,9 +744,14 @@ class CallSemantics:
                 and all(isinstance(a, Obj) for a in pos[0]):
             return atoms(a.cls for a in pos[0])
         if name == "setattr" and len(pos) == 3:
-            for attr in pos[1].strings() or ():
+            names = pos[1].strings()
+            for attr in names or ():
                 self.store_attr(pos[0], attr, pos[2])
+            if not names:  # stored where no code the analysis follows reads it
+                self.escape_value(pos[2])
             return const(None)
+        if name in ("locals", "vars") and not pos and not args.kw and not args.star:
+            return self.local_bindings()
         if name == "print":
             return const(None)
         if name in ("exec", "eval") and node is not None:
@@ -738,6 +759,24 @@ class CallSemantics:
                                     "creates is not in the graph")
         self._escape(args)
         return TOP
+
+    def local_bindings(self) -> Value:
+        """``locals()`` in a function: its variables bound here, by name. Code that reads
+        variables by name this way may call the functions among them wherever the dict goes
+        (a test factory returns the tests it defines as ``{n: f for n, f in
+        locals().items() if n.startswith("test_")}`` for a class built with ``type``), so
+        those escape here, whatever the analysis makes of the dict later. Elsewhere (module
+        or class body), or with more variables than a dict keeps, unknown."""
+        frame = self.frame
+        if frame.func is None or frame.cls is not None:
+            return TOP
+        bound = sorted((name, value) for name, value in frame.env.items()
+                       if not name.startswith("$") and not value.is_bottom)
+        for _, value in bound:
+            self.escape_value(value)
+        if len(bound) > MAX_DICT_ITEMS:
+            return TOP
+        return atoms([DictAtom(tuple((const(name), value) for name, value in bound))])
 
     def _never_set(self, value: Value, attr: str) -> bool:
         """Whether no object ``value`` may be can have ``attr``: workspace objects whose
