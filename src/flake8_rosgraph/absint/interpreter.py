@@ -471,6 +471,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if module is not None:
             if name in module.globals or name in self.program.star_names(module):
                 return self.load_global(module, name)
+            if name in self.program.stored_attrs:
+                # Set from outside (``DR_init.node = node`` in the script that then imports
+                # the module reading it): what those stores wrote, nothing before that (the
+                # read would raise AttributeError).
+                return self.an.read(("g", module.name, name), self.frame.task)
             # A workspace folder named like a library (a ROS package's ``launch/``) that lacks the
             # name: Python would fail on it, so working code imports the library's.
             return self.extern(full) if self.lib.knows(full) else TOP
