@@ -20,7 +20,7 @@ from .frame import Env, Frame
 from .program import Module
 from .rows import LoopRows, rows_of
 from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Record,
-                     Seq, Value, atoms, const)
+                     Seq, Value, atoms, const, join_all)
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
@@ -455,7 +455,18 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return TOP
         if name in BUILTIN_NAMES:
             return atoms([Extern("builtins." + name)])
-        return TOP
+        return self._from_library_star(module, name)
+
+    def _from_library_star(self, module: Module, name: str) -> Value:
+        """A name the module never binds, read where its ``from … import *`` of library modules
+        is what can bind it: that module's member when there is one such import, or the
+        members of each when they are sibling modules of one package (``from arm_msgs.msg
+        import *`` and ``from arm_msgs.srv import *``: one of the two, whoever uses it telling
+        which). Anything else stays unknown."""
+        sources = self.program.library_star_sources(module)
+        if not sources or len({s.rpartition(".")[0] for s in sources}) > 1:
+            return TOP
+        return join_all(self.extern(f"{source}.{name}") for source in sources)
 
     # -- modules ----------------------------------------------------------------------------
     def module_value(self, dotted: str) -> Value:

@@ -311,6 +311,7 @@ class Program:
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
+        self._library_star_memo: dict[str, tuple[str, ...]] = {}
 
     def ensure(self, name: str) -> Module | None:
         """The module, its functions and classes numbered and its scopes gathered (done on
@@ -460,6 +461,26 @@ class Program:
                     out |= source.globals | self.star_names(source)
         self._star_memo[mod.name] = frozenset(out)
         return self._star_memo[mod.name]
+
+    def library_star_sources(self, mod: Module) -> tuple[str, ...]:
+        """The modules outside the workspace ``mod`` star-imports at its top level (also
+        under a top-level ``if``/``try``), sorted: a name nothing else binds there can only
+        come from one of them."""
+        known = self._library_star_memo.get(mod.name)
+        if known is None:
+            found = set()
+            todo = list(mod.tree.body)
+            while todo:
+                stmt = todo.pop()
+                if isinstance(stmt, ast.ImportFrom) and any(a.name == "*" for a in stmt.names):
+                    base = self.resolve_import(mod, stmt.module, stmt.level)
+                    if base and self.ensure(base) is None:
+                        found.add(base)
+                elif isinstance(stmt, (ast.If, ast.Try)):
+                    todo.extend(stmt.body + stmt.orelse + getattr(stmt, "finalbody", [])
+                                + [s for h in getattr(stmt, "handlers", []) for s in h.body])
+            known = self._library_star_memo[mod.name] = tuple(sorted(found))
+        return known
 
     def resolve_import(self, mod: Module, name: str | None, level: int) -> str:
         """The absolute dotted name of ``from <level dots><name> import …`` inside ``mod``."""
