@@ -271,7 +271,8 @@ class _Explainer:
             reasons.extend(found)
         func = self._function_of(scope)
         if func is not None and self._overflowed(func):
-            reasons.append(f"{func.qualname} is called in more than 8 different ways and was "
+            reasons.append(f"{func.qualname} is called in more than "
+                           f"{self.an.context_bound(func.fid)} different ways and was "
                            "also analysed with unknown arguments")
         if unresolved:
             reasons.append("imports not resolved in the workspace: " + ", ".join(unresolved))
