@@ -2,7 +2,8 @@
 an element of a parameter's list deciding a branch by its default; a node a function binds
 to a module global it declares ``global``; test functions a factory hands out through
 ``locals()``; a module attribute set by the script that imports the module reading it; and
-an import that only resolves because the module puts a folder on ``sys.path`` first. Each on
+an import that only resolves because the module puts a folder on ``sys.path`` first; an
+interface type only the star imports of one package's modules can bind. Each on
 a realistic multi-file workspace, with a twin where following the code must not invent a
 name or an entity."""
 from __future__ import annotations
@@ -161,13 +162,7 @@ FACTORY = """
         return {name: obj for name, obj in locals().items() if name.startswith('test_')}
 """
 FACTORY_TEST = """
-    import rclpy
-    from rclpy.node import Node
-
     from fleet_tests.shared import make_tests
-
-    rclpy.init()
-    NODE = Node('tester')
 
 
     def add_tests(cls, tests):
@@ -196,6 +191,49 @@ def test_functions_handed_out_through_locals_are_analysed(tmp_path: Path) -> Non
               if path.endswith("shared.py")}
     assert len(shared) == 2
     assert all("never called" not in " ".join(why) for _, why in shared.values())
+
+
+CONFTEST = """
+    import pytest
+    import rclpy
+    from rclpy.node import Node
+
+
+    @pytest.fixture(scope='module')
+    def node():
+        rclpy.init()
+        test_node = Node('tester')
+        yield test_node
+        test_node.destroy_node()
+"""
+
+
+def test_a_factory_made_test_gets_the_fixtures_of_its_folder(tmp_path: Path) -> None:
+    """pytest runs the factory's tests as methods of the classes it builds, passing the
+    fixtures a ``conftest.py`` above defines: ``node`` is the fixture's node, so the
+    tests' entities are on it, each robot's under its name."""
+    files = _package("fleet_tests", "", {"shared": FACTORY})
+    files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
+    files["conftest.py"] = CONFTEST
+    root = write(tmp_path, files)
+    assert entities(root, ("clients", "subscriptions"))["/tester"] == [
+        ("clients", "/alpha/reset"), ("clients", "/beta/reset"),
+        ("subscriptions", "/alpha/status"), ("subscriptions", "/beta/status")]
+
+
+def test_a_nested_helper_called_with_its_own_node_keeps_it(tmp_path: Path) -> None:
+    """The twin: a nested ``test*`` function its factory calls itself with a node of its own
+    takes that node, not the fixture of the same name."""
+    text = FACTORY.replace(
+        "return {name: obj for name, obj in locals().items() if name.startswith('test_')}",
+        "test_reset_service(None, Node(f'{robot}_checker'))\n        return {}")
+    files = _package("fleet_tests", "", {"shared": text})
+    files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
+    files["conftest.py"] = CONFTEST
+    root = write(tmp_path, files)
+    found = entities(root, ("clients",))
+    assert ("clients", "/alpha/reset") in found["/alpha_checker"]
+    assert found["/tester"] == []
 
 
 def test_functions_a_factory_keeps_to_itself_are_not_entries(tmp_path: Path) -> None:
@@ -284,7 +322,7 @@ def test_an_attribute_nothing_sets_on_the_module_creates_nothing(tmp_path: Path)
     assert entities(root, SERVICES).get("/home_arm") == []
 
 
-# -- ``--explain``: a type only a library's ``import *`` can bind -----------------------------
+# -- names only a library's ``import *`` can bind -------------------------------------------
 STAR_CLIENT = """
     import rclpy
     from arm_msgs.msg import *
@@ -295,25 +333,90 @@ STAR_CLIENT = """
         rclpy.init()
         node = rclpy.create_node('mode_switch')
         client = node.create_client(SetMode, 'system/set_mode')
+        node.create_publisher(Mode, 'mode', 10)
         client.wait_for_service()
 """
 
 
-def test_a_type_from_a_library_star_import_is_explained(tmp_path: Path) -> None:
-    """``SetMode`` is bound by neither the module nor the workspace: only the star imports of
-    the message packages can bind it, and the analysis does not know what they export
-    (doosan-robot2: 210 clients of unknown type, explained by nothing)."""
+def _types(root: Path) -> dict[str, list[tuple[str, str | None]]]:
+    """Each node's clients and publishers as ``(name, type)``."""
+    from flake8_rosgraph.analysis import build_graph
+    return {node.fqn: sorted((e.name, e.type) for e in node.entities
+                             if e.kind in ("clients", "publishers"))
+            for node in build_graph(root).nodes}
+
+
+def test_a_name_from_star_imported_interface_modules_takes_the_fitting_type(
+        tmp_path: Path) -> None:
+    """``SetMode`` and ``Mode`` are bound by nothing in the module or the workspace: only the
+    star imports of one package's ``msg`` and ``srv`` modules can bind them, and a client's
+    type is the service, a publisher's the message (doosan-robot2: 210 creation sites of
+    unknown type, explained by nothing)."""
     root = write(tmp_path, _package("arm_tools", "'switch = arm_tools.switch:main'",
                                     {"switch": STAR_CLIENT}))
-    [why] = [why for status, why in reasons(root).values() if status == "unknown"]
-    assert any("`SetMode` can only come from `from … import *` of `arm_msgs.msg`, "
-               "`arm_msgs.srv`" in reason for reason in why)
+    assert _types(root) == {"/mode_switch": [("/mode", "arm_msgs/msg/Mode"),
+                                             ("/system/set_mode", "arm_msgs/srv/SetMode")]}
+    assert {status for status, _ in reasons(root).values()} == {"complete"}
 
 
-def test_a_type_the_module_imports_by_name_needs_no_explaining(tmp_path: Path) -> None:
-    """The twin: the same client with ``SetMode`` imported by name is complete."""
-    text = STAR_CLIENT.replace("from arm_msgs.srv import *", "from arm_msgs.srv import SetMode")
+def test_star_imports_of_two_packages_leave_the_type_unknown_and_say_why(
+        tmp_path: Path) -> None:
+    """The twin: with star imports of two packages' services, ``SetMode`` could be either
+    one's: the type stays unknown (no second, invented client) and ``--explain`` says that
+    only those imports can bind the name."""
+    text = STAR_CLIENT.replace("from arm_msgs.msg import *", "from gripper_msgs.srv import *")
     root = write(tmp_path, _package("arm_tools", "'switch = arm_tools.switch:main'",
                                     {"switch": text}))
-    assert {status for status, _ in reasons(root).values()} == {"complete"}
-    assert entities(root, SERVICES) == {"/mode_switch": [("clients", "/system/set_mode")]}
+    assert _types(root)["/mode_switch"] == [("/mode", None), ("/system/set_mode", None)]
+    whys = [why for status, why in reasons(root).values() if status == "unknown"]
+    assert any("`SetMode` can only come from `from … import *` of `arm_msgs.srv`, "
+               "`gripper_msgs.srv`" in reason for why in whys for reason in why)
+
+
+# -- a shared helper that creates what many callers name --------------------------------------
+HELPERS = """
+    from rclpy.node import Node
+
+
+    def ready_client(node: Node, srv_type, name: str):
+        '''A client that is ready to be called.'''
+        client = node.create_client(srv_type, name)
+        client.wait_for_service(timeout_sec=5.0)
+        return client
+"""
+
+
+def _suite(calls: int) -> dict[str, str]:
+    """A test calling the helper ``calls`` times, each with a service of its own."""
+    lines = "\n".join(f"        ready_client(node, Trigger, '/robot/step_{i}')" for i in range(calls))
+    test = f"""
+    from std_srvs.srv import Trigger
+
+    from bench.helpers import ready_client
+
+
+    def test_every_step(node):
+{lines}
+"""
+    files = _package("bench", "", {"helpers": HELPERS})
+    files["bench/test/test_steps.py"] = test
+    files["conftest.py"] = CONFTEST
+    return files
+
+
+def test_a_helper_creating_entities_keeps_the_names_of_many_callers(tmp_path: Path) -> None:
+    """A helper that creates the client its caller names keeps 24 calling contexts, not 8:
+    twelve calls' services stay named (rcdt_robotics: a client lost when more tests
+    called the helper)."""
+    root = write(tmp_path, _suite(12))
+    assert entities(root, ("clients",))["/tester"] == sorted(
+        ("clients", f"/robot/step_{i}") for i in range(12))
+
+
+def test_past_its_bound_a_helper_names_nothing_wrong(tmp_path: Path) -> None:
+    """The twin: thirty callers exceed the bound; the names past it are unknown, never a
+    name another caller passed."""
+    root = write(tmp_path, _suite(30))
+    names = {name for _, name in entities(root, ("clients",))["/tester"]} - {"?"}
+    assert names < {f"/robot/step_{i}" for i in range(30)}
+    assert len(names) == 24
