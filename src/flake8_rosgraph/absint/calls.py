@@ -17,8 +17,9 @@ from typing import Iterator
 from .callgraph import CallSite
 from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
+from .fieldclasses import Field
 from .fixtures import is_test_class, test_class_calls
-from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
+from .folding import PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
@@ -310,13 +311,33 @@ class CallSemantics:
                 self.an.write(site, pos[i])
             elif found.name in args.kw:
                 self.an.write(site, args.kw[found.name])
-            elif args.star or (found.computed_default and positional):
+            elif args.star:
                 self.an.write(site, TOP)
+            elif found.computed_default and positional:
+                self.an.write(site, self._field_default(found))
             elif positional and found.has_default:
                 default = self.class_attr(self.mro(obj.cls), found.name, obj)
                 self.an.write(site, TOP if default is None else default)
             elif positional:
                 self.an.write(site, TOP)  # a required field not passed: TypeError, or unseen
+
+    def _field_default(self, found: Field) -> Value:
+        """The default a ``field(...)`` gives: its ``default=`` literal, or what its
+        ``default_factory=`` makes: a lambda's result (``lambda: ['front', 'rear']``) or an
+        empty builtin container; anything else unknown."""
+        expr = found.default_expr
+        if expr is None:
+            return TOP
+        if not found.factory:
+            try:
+                return _literal(ast.literal_eval(expr))
+            except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+                return TOP
+        if isinstance(expr, ast.Lambda):
+            return self.call(atoms([FuncAtom(self.program.fid_of[id(expr)])]), Args([], {}, False), None)
+        if isinstance(expr, ast.Name) and expr.id in ("list", "dict", "set", "tuple"):
+            return self.call_builtin(expr.id, Args([], {}, False), None)
+        return TOP
 
     def instantiate_entry(self, cid: int) -> None:
         """Analyse a class nothing instantiates, as if a library created it with unknown arguments."""
@@ -437,6 +458,10 @@ class CallSemantics:
             return atoms(made) if made and not classes.is_top else TOP
         if qualname.startswith("builtins."):
             return self.call_builtin(qualname[len("builtins."):], args, node)
+        pure = PURE_LIBRARY.get(qualname)
+        if pure is not None and args.pos and not args.kw and not args.star and all(
+                v.strings() is not None for v in args.pos):
+            return fold(pure, list(args.pos))
         owner, _, method = qualname.rpartition(".")
         fn = self.lib.functions.get(qualname) or (
             self.lib.method(owner, method) if owner in self.lib.classes else None)
@@ -816,8 +841,11 @@ class CallSemantics:
     def call_container(self, receiver: Atom, name: str, args: "Args") -> Value:
         if isinstance(receiver, DictAtom):
             if name == "get":
-                default = args.pos[1] if len(args.pos) > 1 else const(None)
-                return self._subscript(receiver, args.pos[0] if args.pos else TOP).join(default)
+                key = args.pos[0] if args.pos else TOP
+                found = self._subscript(receiver, key)
+                if _has_keys(receiver, key):
+                    return found  # ``{'a': 'scan'}.get('a', 'default')`` is never the default
+                return found.join(args.pos[1] if len(args.pos) > 1 else const(None))
             if name == "items":  # pairs stay paired
                 return atoms([Seq("list", tuple(atoms([Seq("tuple", kv)]) for kv in receiver.items))])
             if name == "keys":
@@ -829,6 +857,37 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _literal(value: object) -> Value:
+    """A Python literal (what ``ast.literal_eval`` gives) as a value; unknown past the bounds."""
+    if isinstance(value, (list, tuple)):
+        if len(value) > MAX_ATOMS:
+            return TOP
+        return atoms([Seq("list" if isinstance(value, list) else "tuple", tuple(_literal(v) for v in value))])
+    if isinstance(value, dict):
+        if len(value) > MAX_DICT_ITEMS:
+            return TOP
+        return atoms([DictAtom(tuple((_literal(k), _literal(v)) for k, v in value.items()))])
+    if value is None or isinstance(value, (str, int, float, bool, bytes, complex)):
+        return const(value)
+    return TOP
+
+
+def _has_keys(mapping: DictAtom, key: Value) -> bool:
+    """Whether every value ``key`` may be is a key the dict literal lists (all its keys
+    known): the lookup then finds it. A dict only grows through the mutations the
+    analysis follows (``pop`` and ``del`` are a documented limit)."""
+    wanted = key.consts()
+    if not wanted:
+        return False
+    listed = set()
+    for k, _ in mapping.items:
+        consts = k.consts()
+        if consts is None or len(consts) != 1:
+            return False
+        listed.add(consts[0])
+    return all(w in listed for w in wanted)
 
 
 def _listed(value: Value) -> tuple[Value, ...] | None:
