@@ -190,8 +190,10 @@ class ExpressionSemantics:
         return atoms([DictAtom(tuple(items))])
 
     def e_Subscript(self, node: ast.Subscript) -> Value:
-        container = self.eval(node.value)
-        index = self.eval(node.slice)
+        return self.e_subscript_value(self.eval(node.value), self.eval(node.slice))
+
+    def e_subscript_value(self, container: Value, index: Value) -> Value:
+        """``container[index]``."""
         if container.is_top or all(may_be_filled_elsewhere(a) for a in container):
             return TOP  # only ever seen empty here: what fills it is not seen (as iter_elem)
         out = BOTTOM
