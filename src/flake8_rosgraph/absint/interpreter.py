@@ -521,7 +521,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return atoms([ModuleAtom(dotted)])
         return atoms([Extern(self.lib.canonical(dotted))])
 
-    def import_member(self, base: str, name: str) -> Value:
+    def import_member(self, base: str, name: str, attribute: bool = False) -> Value:
+        """``from base import name``, or the attribute ``base.name`` (``attribute``)."""
         full = f"{base}.{name}" if base else name
         if full in self.program.modules:
             return atoms([ModuleAtom(full)])
@@ -529,10 +530,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if module is not None:
             if name in module.globals or name in self.program.star_names(module):
                 return self.load_global(module, name)
-            if name in self.program.stored_attrs:
+            if attribute and name in self.program.stored_attrs:
                 # Set from outside (``DR_init.node = node`` in the script that then imports
                 # the module reading it): what those stores wrote, nothing before that (the
-                # read would raise AttributeError).
+                # read would raise AttributeError). Not for ``from base import name``: a
+                # workspace folder named like a library lacks the library's names.
                 return self.an.read(("g", module.name, name), self.frame.task)
             # A workspace folder named like a library (a ROS package's ``launch/``) that lacks the
             # name: Python would fail on it, so working code imports the library's.
