@@ -17,7 +17,7 @@ from test_workspace_discovery import PACKAGE_XML, setup_py, write
 SERVICES = ("services", "clients")
 
 
-def _package(name: str, entries: str, modules: dict[str, str]) -> dict[str, str]:
+def package(name: str, entries: str, modules: dict[str, str]) -> dict[str, str]:
     """An ament_python package ``name`` with these console scripts and modules."""
     files = {f"{name}/package.xml": PACKAGE_XML.format(name=name, build="ament_python"),
              f"{name}/setup.py": setup_py(name, entries),
@@ -83,7 +83,7 @@ def test_an_element_of_a_parameter_list_decides_no_branch(tmp_path: Path) -> Non
     the run may override: both branches exist in some configuration, so the service and the
     client (named by the run) are in the graph; ``len(buttons)`` is not the default's 1
     (rcdt_robotics: a client the analysis claimed could never be created)."""
-    root = write(tmp_path, _package("joy_router", "'router = joy_router.router:main'",
+    root = write(tmp_path, package("joy_router", "'router = joy_router.router:main'",
                                     {"router": BUTTONS}))
     assert entities(root, SERVICES) == {
         "/button_router": [("clients", "?"), ("services", "/first_is_service")]}
@@ -95,7 +95,7 @@ def test_an_element_of_a_written_list_still_decides_its_branch(tmp_path: Path) -
     """The twin: a list the code writes out is the run's, so ``flags[0]`` is ``False`` and
     the service under it is never created."""
     text = BUTTONS.replace("if is_service[0]:", "if [False, True][0]:")
-    root = write(tmp_path, _package("joy_router", "'router = joy_router.router:main'",
+    root = write(tmp_path, package("joy_router", "'router = joy_router.router:main'",
                                     {"router": text}))
     assert "/first_is_service" not in {
         name for _, name in entities(root, SERVICES)["/button_router"]}
@@ -127,7 +127,7 @@ def test_a_node_bound_to_a_declared_global_keeps_its_entities(tmp_path: Path) ->
     """``global node`` then ``node = Node('echo')`` in ``main`` binds the module's ``node``,
     which the callbacks read too (a module-level ``global node`` declares nothing); it was
     unknown, so the subscription was lost (ROS2_learning)."""
-    root = write(tmp_path, _package("echo", "'echo = echo.echo:main'", {"echo": GLOBAL_NODE}))
+    root = write(tmp_path, package("echo", "'echo = echo.echo:main'", {"echo": GLOBAL_NODE}))
     assert entities(root, ("subscriptions",)) == {"/echo": [("subscriptions", "/chatter")]}
 
 
@@ -135,7 +135,7 @@ def test_a_global_declared_but_never_bound_stays_unknown(tmp_path: Path) -> None
     """The twin: ``main`` declares ``global node`` but binds a local of another name; the
     module never binds ``node``, so nothing is created on it."""
     text = GLOBAL_NODE.replace("node = Node('echo')\n", "other = Node('echo')\n")
-    root = write(tmp_path, _package("echo", "'echo = echo.echo:main'", {"echo": text}))
+    root = write(tmp_path, package("echo", "'echo = echo.echo:main'", {"echo": text}))
     assert entities(root, ("subscriptions",)) == {"/echo": []}
 
 
@@ -183,7 +183,7 @@ def test_functions_handed_out_through_locals_are_analysed(tmp_path: Path) -> Non
     """``locals()`` gives away every function the factory defines: the class built with
     ``type`` (or filled with ``setattr``) makes them tests pytest calls, so they are entries,
     here with an unknown node (rcdt_robotics: five creation sites never called)."""
-    files = _package("fleet_tests", "", {"shared": FACTORY})
+    files = package("fleet_tests", "", {"shared": FACTORY})
     files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
     root = write(tmp_path, files)
     found = reasons(root)
@@ -212,7 +212,7 @@ def test_a_factory_made_test_gets_the_fixtures_of_its_folder(tmp_path: Path) -> 
     """pytest runs the factory's tests as methods of the classes it builds, passing the
     fixtures a ``conftest.py`` above defines: ``node`` is the fixture's node, so the
     tests' entities are on it, each robot's under its name."""
-    files = _package("fleet_tests", "", {"shared": FACTORY})
+    files = package("fleet_tests", "", {"shared": FACTORY})
     files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
     files["conftest.py"] = CONFTEST
     root = write(tmp_path, files)
@@ -227,7 +227,7 @@ def test_a_nested_helper_called_with_its_own_node_keeps_it(tmp_path: Path) -> No
     text = FACTORY.replace(
         "return {name: obj for name, obj in locals().items() if name.startswith('test_')}",
         "test_reset_service(None, Node(f'{robot}_checker'))\n        return {}")
-    files = _package("fleet_tests", "", {"shared": text})
+    files = package("fleet_tests", "", {"shared": text})
     files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
     files["conftest.py"] = CONFTEST
     root = write(tmp_path, files)
@@ -244,7 +244,7 @@ def test_functions_a_factory_keeps_to_itself_are_not_entries(tmp_path: Path) -> 
         "return {'test_reset_service': test_reset_service}").replace(
         "def helper() -> None:\n            pass",
         "def helper(node: Node) -> None:\n            node.create_client(Trigger, 'unused')")
-    files = _package("fleet_tests", "", {"shared": text})
+    files = package("fleet_tests", "", {"shared": text})
     files["fleet_tests/test/test_fleet.py"] = FACTORY_TEST
     root = write(tmp_path, files)
     by_line = {line: why for (path, line), (_, why) in reasons(root).items()
@@ -292,7 +292,7 @@ def _sdk(script: str) -> dict[str, str]:
     files = {"common/api/__init__.py": "",
              "common/api/robot_api.py": ROBOT_API,
              "common/api/robot_init.py": ROBOT_INIT}
-    files.update(_package("arm_examples", "'home = arm_examples.home:main'", {"home": script}))
+    files.update(package("arm_examples", "'home = arm_examples.home:main'", {"home": script}))
     return files
 
 
@@ -352,7 +352,7 @@ def test_a_name_from_star_imported_interface_modules_takes_the_fitting_type(
     star imports of one package's ``msg`` and ``srv`` modules can bind them, and a client's
     type is the service, a publisher's the message (doosan-robot2: 210 creation sites of
     unknown type, explained by nothing)."""
-    root = write(tmp_path, _package("arm_tools", "'switch = arm_tools.switch:main'",
+    root = write(tmp_path, package("arm_tools", "'switch = arm_tools.switch:main'",
                                     {"switch": STAR_CLIENT}))
     assert _types(root) == {"/mode_switch": [("/mode", "arm_msgs/msg/Mode"),
                                              ("/system/set_mode", "arm_msgs/srv/SetMode")]}
@@ -365,7 +365,7 @@ def test_star_imports_of_two_packages_leave_the_type_unknown_and_say_why(
     one's: the type stays unknown (no second, invented client) and ``--explain`` says that
     only those imports can bind the name."""
     text = STAR_CLIENT.replace("from arm_msgs.msg import *", "from gripper_msgs.srv import *")
-    root = write(tmp_path, _package("arm_tools", "'switch = arm_tools.switch:main'",
+    root = write(tmp_path, package("arm_tools", "'switch = arm_tools.switch:main'",
                                     {"switch": text}))
     assert _types(root)["/mode_switch"] == [("/mode", None), ("/system/set_mode", None)]
     whys = [why for status, why in reasons(root).values() if status == "unknown"]
@@ -398,7 +398,7 @@ def _suite(calls: int) -> dict[str, str]:
     def test_every_step(node):
 {lines}
 """
-    files = _package("bench", "", {"helpers": HELPERS})
+    files = package("bench", "", {"helpers": HELPERS})
     files["bench/test/test_steps.py"] = test
     files["conftest.py"] = CONFTEST
     return files
@@ -420,3 +420,20 @@ def test_past_its_bound_a_helper_names_nothing_wrong(tmp_path: Path) -> None:
     names = {name for _, name in entities(root, ("clients",))["/tester"]} - {"?"}
     assert names < {f"/robot/step_{i}" for i in range(30)}
     assert len(names) == 24
+
+
+def test_a_name_a_workspace_module_lacks_imported_from_it_stays_unknown(tmp_path: Path) -> None:
+    """The twin of the module attribute set from outside: ``from robot_init import
+    __robot_node__`` of a workspace module that never binds it (a library's name, shadowed)
+    is unknown, not a missing value that would stop the script; the node keeps its
+    publisher after the import."""
+    script = ROBOT_SCRIPT.replace("    robot_init.__robot_node__ = node\n", "").replace(
+        "from robot_api import *", "from robot_init import __robot_node__\n"
+        "    __robot_node__.get_logger().info('arm ready')\n"
+        "    node.create_publisher(String, 'status', 10)").replace(
+        "import rclpy\n", "import rclpy\n    from std_msgs.msg import String\n", 1)
+    files = _sdk(script)
+    files["common/api/robot_state.py"] = "class State:\n    def bind(self, node):\n" \
+                                         "        self.__robot_node__ = node\n"
+    root = write(tmp_path, files)
+    assert entities(root, ("publishers",)) == {"/home_arm": [("publishers", "/status")]}
