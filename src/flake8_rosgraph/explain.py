@@ -271,7 +271,8 @@ class _Explainer:
             reasons.extend(found)
         func = self._function_of(scope)
         if func is not None and self._overflowed(func):
-            reasons.append(f"{func.qualname} is called in more than 8 different ways and was "
+            reasons.append(f"{func.qualname} is called in more than "
+                           f"{self.an.context_bound(func.fid)} different ways and was "
                            "also analysed with unknown arguments")
         if unresolved:
             reasons.append("imports not resolved in the workspace: " + ", ".join(unresolved))
@@ -476,6 +477,20 @@ class _Explainer:
                     return ref.data, _argument(call, model.signature, ref.data)
         return None, None
 
+    def _star_binding(self, name: str, module: Module) -> str | None:
+        """A name the module never binds itself, which only its ``from … import *`` of
+        modules outside the workspace can bind: what those give is not known."""
+        if name in module.globals or name in self.program.star_names(module):
+            return None
+        sources = sorted({stmt.module or "" for stmt in module.tree.body
+                          if isinstance(stmt, ast.ImportFrom) and stmt.level == 0
+                          and any(a.name == "*" for a in stmt.names)
+                          and self.program.resolve_import(module, stmt.module, 0) not in self.program.modules})
+        if not sources:
+            return None
+        return (f"`{name}` can only come from `from … import *` of {', '.join(f'`{s}`' for s in sources)}, "
+                "outside the workspace: the names it binds are not known")
+
     def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
                         module: Module) -> list[str]:
         """Where the value of ``expr`` comes from, in words (what made it unknown)."""
@@ -484,7 +499,8 @@ class _Explainer:
         out: list[str] = []
         for name in sorted({n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}
                            - {"self", "cls"}):
-            binding = _binding_of(name, scope, call) or _module_binding(name, module)
+            binding = _binding_of(name, scope, call) or _module_binding(name, module) \
+                or self._star_binding(name, module)
             if binding:
                 out.append(binding)
         calls = [sub for sub in ast.walk(expr) if isinstance(sub, ast.Call)]

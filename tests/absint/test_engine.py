@@ -90,13 +90,18 @@ def test_a_base_class_helper_keeps_every_nodes_parameters(tmp_path):
 
 
 def test_too_many_contexts_widen_arguments_and_say_so(tmp_path):
-    calls = "".join(f"make('t{i}')\n" for i in range(12))
+    """A helper that creates entities itself keeps 24 contexts, any other function 8."""
+    calls = "".join(f"make('t{i}')\nprefix('p{i}')\n" for i in range(30))
     analysis = run(tmp_path, {"m.py": "import rclpy\nnode = rclpy.create_node('n')\n"
+                              "def prefix(topic):\n"
+                              "    return topic\n"
                               "def make(topic):\n"
                               "    node.create_publisher(int, topic, 10)\n" + calls})
     topics = [e.arg("topic") for e in analysis.all_effects() if e.kind == "publisher"]
     assert any(t.is_top for t in topics)
-    assert any("more than 8 different ways" in d.message for d in analysis.diagnostics)
+    messages = [d.message for d in analysis.diagnostics]
+    assert any("make is called in more than 24 different ways" in m for m in messages)
+    assert any("prefix is called in more than 8 different ways" in m for m in messages)
 
 
 def test_counters_in_callbacks_are_widened_not_counted_up(tmp_path):

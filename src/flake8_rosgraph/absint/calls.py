@@ -15,10 +15,11 @@ from dataclasses import dataclass
 from typing import Iterator
 
 from .callgraph import CallSite
-from .containers import may_be_filled_elsewhere
+from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
+from .fieldclasses import Field
 from .fixtures import is_test_class, test_class_calls
-from .folding import PURE_BUILTINS, call_str_method, fold, safe_template, wide_template
+from .folding import PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, safe_template, wide_template
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
@@ -68,11 +69,27 @@ class CallSemantics:
         return out
 
     def _escape(self, args: "Args") -> None:
-        """Callables passed to unknown code may be called by it: analyse them as entries."""
+        """Callables passed to unknown code may be called by it: analyse them as entries.
+        So may those inside a list, tuple or dict passed to it (a table of handlers, the
+        namespace ``type(name, bases, ns)`` builds a class from)."""
         for value in list(args.pos) + list(args.kw.values()):
-            for atom in value:
-                if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
-                    self.schedule_callback(atom)
+            self.escape_value(value)
+
+    def escape_value(self, value: Value) -> None:
+        """Analyse the callables in ``value`` (and in the containers it holds) as entries:
+        unknown code receives it."""
+        for atom in value:
+            if isinstance(atom, (FuncAtom, BoundMethod, Partial)) or self._callable_object(atom):
+                self.schedule_callback(atom)
+            elif isinstance(atom, Seq):
+                for item in atom.items:
+                    self.escape_value(item)
+            elif isinstance(atom, Coll):
+                self.escape_value(atom.elem)
+            elif isinstance(atom, DictAtom):
+                for key, item in atom.items:
+                    self.escape_value(key)
+                    self.escape_value(item)
 
     def _call_atom(self, atom: Atom, args: "Args", node) -> Value:
         if isinstance(atom, FuncAtom):
@@ -294,13 +311,33 @@ class CallSemantics:
                 self.an.write(site, pos[i])
             elif found.name in args.kw:
                 self.an.write(site, args.kw[found.name])
-            elif args.star or (found.computed_default and positional):
+            elif args.star:
                 self.an.write(site, TOP)
+            elif found.computed_default and positional:
+                self.an.write(site, self._field_default(found))
             elif positional and found.has_default:
                 default = self.class_attr(self.mro(obj.cls), found.name, obj)
                 self.an.write(site, TOP if default is None else default)
             elif positional:
                 self.an.write(site, TOP)  # a required field not passed: TypeError, or unseen
+
+    def _field_default(self, found: Field) -> Value:
+        """The default a ``field(...)`` gives: its ``default=`` literal, or what its
+        ``default_factory=`` makes: a lambda's result (``lambda: ['front', 'rear']``) or an
+        empty builtin container; anything else unknown."""
+        expr = found.default_expr
+        if expr is None:
+            return TOP
+        if not found.factory:
+            try:
+                return _literal(ast.literal_eval(expr))
+            except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+                return TOP
+        if isinstance(expr, ast.Lambda):
+            return self.call(atoms([FuncAtom(self.program.fid_of[id(expr)])]), Args([], {}, False), None)
+        if isinstance(expr, ast.Name) and expr.id in ("list", "dict", "set", "tuple"):
+            return self.call_builtin(expr.id, Args([], {}, False), None)
+        return TOP
 
     def instantiate_entry(self, cid: int) -> None:
         """Analyse a class nothing instantiates, as if a library created it with unknown arguments."""
@@ -421,6 +458,10 @@ class CallSemantics:
             return atoms(made) if made and not classes.is_top else TOP
         if qualname.startswith("builtins."):
             return self.call_builtin(qualname[len("builtins."):], args, node)
+        pure = PURE_LIBRARY.get(qualname)
+        if pure is not None and args.pos and not args.kw and not args.star and all(
+                v.strings() is not None for v in args.pos):
+            return fold(pure, list(args.pos))
         owner, _, method = qualname.rpartition(".")
         fn = self.lib.functions.get(qualname) or (
             self.lib.method(owner, method) if owner in self.lib.classes else None)
@@ -728,9 +769,14 @@ class CallSemantics:
                 and all(isinstance(a, Obj) for a in pos[0]):
             return atoms(a.cls for a in pos[0])
         if name == "setattr" and len(pos) == 3:
-            for attr in pos[1].strings() or ():
+            names = pos[1].strings()
+            for attr in names or ():
                 self.store_attr(pos[0], attr, pos[2])
+            if not names:  # stored where no code the analysis follows reads it
+                self.escape_value(pos[2])
             return const(None)
+        if name in ("locals", "vars") and not pos and not args.kw and not args.star:
+            return self.local_bindings()
         if name == "print":
             return const(None)
         if name in ("exec", "eval") and node is not None:
@@ -738,6 +784,24 @@ class CallSemantics:
                                     "creates is not in the graph")
         self._escape(args)
         return TOP
+
+    def local_bindings(self) -> Value:
+        """``locals()`` in a function: its variables bound here, by name. Code that reads
+        variables by name this way may call the functions among them wherever the dict goes
+        (a test factory returns the tests it defines as ``{n: f for n, f in
+        locals().items() if n.startswith("test_")}`` for a class built with ``type``), so
+        those escape here, whatever the analysis makes of the dict later. Elsewhere (module
+        or class body), or with more variables than a dict keeps, unknown."""
+        frame = self.frame
+        if frame.func is None or frame.cls is not None:
+            return TOP
+        bound = sorted((name, value) for name, value in frame.env.items()
+                       if not name.startswith("$") and not value.is_bottom)
+        for _, value in bound:
+            self.escape_value(value)
+        if len(bound) > MAX_DICT_ITEMS:
+            return TOP
+        return atoms([DictAtom(tuple((const(name), value) for name, value in bound))])
 
     def _never_set(self, value: Value, attr: str) -> bool:
         """Whether no object ``value`` may be can have ``attr``: workspace objects whose
@@ -777,8 +841,11 @@ class CallSemantics:
     def call_container(self, receiver: Atom, name: str, args: "Args") -> Value:
         if isinstance(receiver, DictAtom):
             if name == "get":
-                default = args.pos[1] if len(args.pos) > 1 else const(None)
-                return self._subscript(receiver, args.pos[0] if args.pos else TOP).join(default)
+                key = args.pos[0] if args.pos else TOP
+                found = self._subscript(receiver, key)
+                if _has_keys(receiver, key):
+                    return found  # ``{'a': 'scan'}.get('a', 'default')`` is never the default
+                return found.join(args.pos[1] if len(args.pos) > 1 else const(None))
             if name == "items":  # pairs stay paired
                 return atoms([Seq("list", tuple(atoms([Seq("tuple", kv)]) for kv in receiver.items))])
             if name == "keys":
@@ -790,6 +857,37 @@ class CallSemantics:
         if name in ("append", "extend", "insert", "add", "update", "clear", "remove"):
             return const(None)
         return TOP
+
+
+def _literal(value: object) -> Value:
+    """A Python literal (what ``ast.literal_eval`` gives) as a value; unknown past the bounds."""
+    if isinstance(value, (list, tuple)):
+        if len(value) > MAX_ATOMS:
+            return TOP
+        return atoms([Seq("list" if isinstance(value, list) else "tuple", tuple(_literal(v) for v in value))])
+    if isinstance(value, dict):
+        if len(value) > MAX_DICT_ITEMS:
+            return TOP
+        return atoms([DictAtom(tuple((_literal(k), _literal(v)) for k, v in value.items()))])
+    if value is None or isinstance(value, (str, int, float, bool, bytes, complex)):
+        return const(value)
+    return TOP
+
+
+def _has_keys(mapping: DictAtom, key: Value) -> bool:
+    """Whether every value ``key`` may be is a key the dict literal lists (all its keys
+    known): the lookup then finds it. A dict only grows through the mutations the
+    analysis follows (``pop`` and ``del`` are a documented limit)."""
+    wanted = key.consts()
+    if not wanted:
+        return False
+    listed = set()
+    for k, _ in mapping.items:
+        consts = k.consts()
+        if consts is None or len(consts) != 1:
+            return False
+        listed.add(consts[0])
+    return all(w in listed for w in wanted)
 
 
 def _listed(value: Value) -> tuple[Value, ...] | None:
@@ -807,8 +905,8 @@ def _known_length(value: Value) -> Value:
     """``len(value)`` where every possibility has a known length: a sequence or dict whose
     items are listed (``for i in range(len(self.topics))`` over a list the caller wrote);
     not an empty list or dict, which unseen code may fill (as its truth decides nothing)."""
-    if value.is_top or value.is_bottom:
-        return TOP
+    if value.is_top or value.is_bottom or value.soft or value.origin is not None:
+        return TOP  # a default's length, not the run's (a parameter's list may be longer)
     lengths = []
     for atom in value:
         if isinstance(atom, (Seq, DictAtom)) and not may_be_filled_elsewhere(atom):

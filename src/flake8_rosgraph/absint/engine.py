@@ -43,6 +43,12 @@ from .values import BOTTOM, TOP, BoundMethod, ClassAtom, FuncAtom, Obj, Value
 
 #: Contexts per function before further calls share one all-⊤ context.
 MAX_CONTEXTS = 8
+#: Contexts per function whose own body runs a library model with effects (a shared helper
+#: that creates the entity its caller names): each context may name one more entity, so a
+#: helper called from many tests keeps more of them before its names become unknown.
+MAX_EFFECT_CONTEXTS = 24
+#: Effects that only record how code uses objects no model describes (:mod:`.instances`).
+FACT_KINDS = frozenset({"construct", "set_attribute", "get_attribute"})
 #: Past :data:`MAX_CONTEXTS`, contexts per function that still keep the functions and classes
 #: passed (which code runs), their other arguments ⊤.
 MAX_CODE_CONTEXTS = 32
@@ -123,6 +129,8 @@ class Analysis:
         self._code_contexts: dict[tuple, set[tuple]] = {}
         self._growth: dict[Hashable, int] = {}
         self._overflowed: set[int] = set()
+        #: Functions whose own body ran a library model with effects (see MAX_EFFECT_CONTEXTS).
+        self._effectful: set[int] = set()
         self.effects: dict[Task, dict[tuple, Effect]] = {}
         self.calls: dict[Task, dict] = {}          # task -> its call sites (see callgraph.py)
         self.falls_off: set[Task] = set()          # tasks whose body may end without return
@@ -228,13 +236,14 @@ class Analysis:
         rest = ctx[1:] if method else ctx
         seen = self.contexts.setdefault(fid, {})
         counted = self._context_counts.setdefault(bucket, set())
-        if ctx not in seen and rest not in counted and len(counted) >= MAX_CONTEXTS:
+        bound = self.context_bound(fid)
+        if ctx not in seen and rest not in counted and len(counted) >= bound:
             ctx = ((ctx[0],) if method else ()) + self._code_only(bucket, rest)
             if fid not in self._overflowed:
                 self._overflowed.add(fid)
                 self.diagnostics.append(Diagnostic(
                     func.module.path, getattr(func.node, "lineno", 1),
-                    f"{func.qualname} is called in more than {MAX_CONTEXTS} different ways; "
+                    f"{func.qualname} is called in more than {bound} different ways; "
                     "further calls are analysed with unknown arguments but the functions and "
                     "classes they pass", "info"))
         seen[ctx] = None
@@ -244,6 +253,10 @@ class Analysis:
         if task not in self._known:
             self.enqueue(task)
         return task
+
+    def context_bound(self, fid: int) -> int:
+        """How many different calls of ``fid`` keep their own arguments."""
+        return MAX_EFFECT_CONTEXTS if fid in self._effectful else MAX_CONTEXTS
 
     def _code_only(self, bucket: tuple, rest: tuple) -> tuple:
         """``rest`` with every argument but functions and classes made ⊤: a helper that runs
@@ -332,6 +345,8 @@ class Analysis:
             self._current = outer
         self.effects[task] = effects
         self.calls[task] = calls
+        if task[0] == "fn" and any(e.kind not in FACT_KINDS for e in effects.values()):
+            self._effectful.add(task[1])
         if falls_off:
             self.falls_off.add(task)
         else:

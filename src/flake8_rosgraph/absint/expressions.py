@@ -16,7 +16,7 @@ from .enums import is_member_site
 from .rows import LoopRows, rows_of
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
-                     const, join_all, joined)
+                     const, join_all, joined, soften)
 
 
 class ExpressionSemantics:
@@ -190,14 +190,26 @@ class ExpressionSemantics:
         return atoms([DictAtom(tuple(items))])
 
     def e_Subscript(self, node: ast.Subscript) -> Value:
-        container = self.eval(node.value)
-        index = self.eval(node.slice)
+        return self.e_subscript_value(self.eval(node.value), self.eval(node.slice))
+
+    def e_subscript_value(self, container: Value, index: Value) -> Value:
+        """``container[index]``."""
         if container.is_top or all(may_be_filled_elsewhere(a) for a in container):
             return TOP  # only ever seen empty here: what fills it is not seen (as iter_elem)
         out = BOTTOM
         for atom in container:
             out = out.join(self._subscript(atom, index))
-        return out
+        return self.element_of(container, out)
+
+    @staticmethod
+    def element_of(container: Value, element: Value) -> Value:
+        """What an element read from ``container`` is: a collection supplied from outside (a
+        parameter's list) or a default the run may override holds its default's elements at
+        most, so they stay names beside the unknown rest (as ``iter_elem``) or overridable
+        defaults, and decide no branch (``flags[0]`` of a parameter declared ``[False]``)."""
+        if container.origin is not None:
+            return TOP.join(element)
+        return soften(element) if container.soft else element
 
     def _call_per_row(self, node: ast.Call) -> Value | None:
         """A creation call in the body of a loop over a written-out table, evaluated once per
@@ -414,9 +426,7 @@ class ExpressionSemantics:
                     out = out.join(self.enum_member(atom, name))
             else:
                 return TOP
-        # A collection supplied from outside (a parameter's list): its default's elements are
-        # some of the run's at most; kept as known names beside the unknown rest.
-        return TOP.join(out) if value.origin is not None else out
+        return self.element_of(value, out)
 
     @staticmethod
     def truth(value: Value, by_default: bool = True) -> bool | None:

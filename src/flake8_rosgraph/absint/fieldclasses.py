@@ -16,7 +16,7 @@ library writes its ``__init__`` from them; the interpreter binds the arguments
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from .program import Class
 
@@ -40,6 +40,10 @@ class Field:
     computed_default: bool
     has_default: bool
     init: bool = True
+    #: For a ``field(...)`` default: the expression of its ``default=``, or of the callable
+    #: its ``default_factory=`` (attrs: ``factory=``) calls for each instance (``factory``).
+    default_expr: ast.expr | None = field(default=None, compare=False)
+    factory: bool = False
 
 
 def _dotted(expr: ast.expr) -> str | None:
@@ -79,5 +83,8 @@ def own_fields(klass: Class) -> list[Field]:
             "field", "Field", "ib", "attrib")
         init = not (computed and any(kw.arg == "init" and isinstance(kw.value, ast.Constant)
                                      and kw.value.value is False for kw in value.keywords))
-        out.append(Field(stmt.target.id, computed, value is not None, init))
+        given = {kw.arg: kw.value for kw in value.keywords} if computed else {}
+        factory = given.get("default_factory", given.get("factory"))
+        out.append(Field(stmt.target.id, computed, value is not None, init,
+                         factory if factory is not None else given.get("default"), factory is not None))
     return out

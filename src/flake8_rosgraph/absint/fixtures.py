@@ -61,9 +61,14 @@ class Fixtures:
 
     def arguments(self, func: Function) -> dict[str, int]:
         """Parameter name -> fid of the fixture pytest passes for it, for a function pytest
-        calls (a module-level ``test*`` function or fixture of a test file); empty otherwise."""
-        if func.parent is not None or func.cls is not None or isinstance(func.node, ast.Lambda) \
-                or not is_test_file(func.module.path):
+        calls (a module-level ``test*`` function or fixture of a test file, or a ``test*``
+        function a factory defines: see :meth:`_made_test`); empty otherwise."""
+        if isinstance(func.node, ast.Lambda) or func.cls is not None:
+            return {}
+        if func.parent is not None:
+            if not self._made_test(func):
+                return {}
+        elif not is_test_file(func.module.path):
             return {}
         visible = self._visible_in(func.module)
         if not (func.node.name.startswith("test") or func.fid in visible.values()):
@@ -72,6 +77,16 @@ class Fixtures:
         params = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
         given = _parametrized(func.node)
         return {name: visible[name] for name in params if name in visible and name not in given}
+
+    def _made_test(self, func: Function) -> bool:
+        """A ``test*`` function defined inside a function (a factory that hands its tests to
+        the test classes of several modules, ``type(name, bases, tests)``), of a module that
+        shares fixtures with test files (a ``conftest.py`` above it): pytest runs it as a
+        test method, with the fixtures of that folder. Its parameters are looked up only when
+        the task left them unknown (a caller of its own passes its values)."""
+        return func.node.name.startswith("test") and any(
+            posixpath.basename(self.program.modules[c].path) == CONFTEST
+            for c in conftests_seen_from(func.module.path, self._module_at))
 
     def request(self, func: Function) -> Value | None:
         """What pytest passes a test function's ``request`` parameter when no workspace fixture

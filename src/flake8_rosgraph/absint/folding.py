@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 import itertools
 import operator
+import posixpath
 import re
 import string
 from typing import Any, Callable
@@ -41,6 +42,14 @@ PURE_BUILTINS: dict[str, Callable[..., Any]] = {
     "str": str, "int": int, "float": float, "bool": bool, "abs": abs, "round": round,
     "min": min, "max": max, "len": len, "repr": repr, "hex": hex, "oct": oct, "bin": bin,
     "chr": chr, "ord": ord,
+}
+#: Library functions that compute a string from strings only, and fold on constants
+#: (``os.path.join(ns, 'cmd_vel')``): Python's own, for POSIX paths, as ROS names are.
+PURE_LIBRARY: dict[str, Callable[..., Any]] = {
+    "os.path.join": posixpath.join, "posixpath.join": posixpath.join,
+    "os.path.basename": posixpath.basename, "posixpath.basename": posixpath.basename,
+    "os.path.dirname": posixpath.dirname, "posixpath.dirname": posixpath.dirname,
+    "os.path.normpath": posixpath.normpath, "posixpath.normpath": posixpath.normpath,
 }
 #: str methods that fold on constants (no side effects, bounded output).
 STR_METHODS = frozenset({

@@ -19,8 +19,8 @@ from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
 from .frame import Env, Frame
 from .program import Module
 from .rows import LoopRows, rows_of
-from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Record,
-                     Seq, Value, atoms, const)
+from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Obj, Record,
+                     Seq, Value, atoms, const, join_all)
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
@@ -28,6 +28,7 @@ from .fieldclasses import Field
 from .fixtures import Fixtures
 from .instances import InstanceFacts
 from .objects import ObjectSemantics
+from .typetests import isinstance_value
 
 BUILTIN_NAMES = frozenset(dir(builtins))
 #: Expressions whose evaluation may change state (see ``Interpreter._pure_test``).
@@ -241,13 +242,59 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 self.eval(op.value)
             self.assign(op.target, TOP)
         else:  # match captures
-            subject = self.eval(op.value)
-            for node in ast.walk(op.target):
-                name = getattr(node, "name", None) or getattr(node, "rest", None)
+            self._match_bind(op.target, self.eval(op.value))
+
+    def _match_bind(self, pattern: ast.pattern, subject: Value) -> None:
+        """Bind the names a ``case`` pattern captures to the parts of ``subject`` they match:
+        ``x`` or ``P as x`` the subject, ``Cls(topic=t)`` its attribute, ``{'topic': t}`` the
+        dict's item, ``[a, b]`` the items of a sequence of that length; anything else (an
+        alternative, a ``*rest``, a positional class pattern) unknown."""
+        if isinstance(pattern, ast.MatchAs):
+            if pattern.name is not None:
+                self.store_name(pattern.name, subject)
+            if pattern.pattern is not None:
+                self._match_bind(pattern.pattern, subject)
+        elif isinstance(pattern, ast.MatchClass):
+            for sub in pattern.patterns:
+                self._match_bind(sub, TOP)
+            matching = self._instances_of(subject, self.eval(pattern.cls))
+            for attr, sub in zip(pattern.kwd_attrs, pattern.kwd_patterns):
+                self._match_bind(sub, TOP if matching.is_top else self.load_attr(matching, attr))
+        elif isinstance(pattern, ast.MatchMapping):
+            for key, sub in zip(pattern.keys, pattern.patterns):
+                self._match_bind(sub, self._match_item(subject, self.eval(key)))
+            if pattern.rest is not None:
+                self.store_name(pattern.rest, TOP)
+        elif isinstance(pattern, ast.MatchSequence):
+            items = _listed_items(subject, len(pattern.patterns))
+            for i, sub in enumerate(pattern.patterns):
+                self._match_bind(sub, items[i] if items is not None else TOP)
+        else:  # MatchOr, MatchStar, MatchValue, MatchSingleton
+            for node in ast.walk(pattern):
+                name = getattr(node, "name", None)
                 if isinstance(name, str):
-                    # ``case P as x`` binds the whole subject, whatever ``P`` checks.
-                    whole = isinstance(node, ast.MatchAs) and node is op.target
-                    self.store_name(name, subject if whole else TOP)
+                    self.store_name(name, TOP)
+
+    def _instances_of(self, subject: Value, cls: Value) -> Value:
+        """The possibilities of ``subject`` a class pattern of ``cls`` may match (not those
+        that are certainly of another class: a workspace class's instance matches a workspace
+        class in its MRO only); unknown unless some are."""
+        if subject.is_top or cls.is_top:
+            return TOP
+        kept = []
+        for atom in subject:
+            if isinstance(atom, Obj) and isinstance(atom.cls, ClassAtom) and len(cls.atoms) == 1 \
+                    and isinstance(next(iter(cls.atoms)), ClassAtom):
+                if next(iter(cls.atoms)) in self.mro(atom.cls):
+                    kept.append(atom)
+            elif isinstance_value(atoms([atom]), cls) != const(False):
+                kept.append(atom)
+        return atoms(kept) if kept else TOP
+
+    def _match_item(self, subject: Value, key: Value) -> Value:
+        if subject.is_top or not all(isinstance(a, DictAtom) for a in subject):
+            return TOP
+        return self.e_subscript_value(subject, key)
 
     def _keep_rows(self, op: Bind, iterable: Value) -> None:
         """Keep the rows of a loop over a written-out table beside the joined binding, for
@@ -455,7 +502,18 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return TOP
         if name in BUILTIN_NAMES:
             return atoms([Extern("builtins." + name)])
-        return TOP
+        return self._from_library_star(module, name)
+
+    def _from_library_star(self, module: Module, name: str) -> Value:
+        """A name the module never binds, read where its ``from … import *`` of library modules
+        is what can bind it: that module's member when there is one such import, or the
+        members of each when they are sibling modules of one package (``from arm_msgs.msg
+        import *`` and ``from arm_msgs.srv import *``: one of the two, whoever uses it telling
+        which). Anything else stays unknown."""
+        sources = self.program.library_star_sources(module)
+        if not sources or len({s.rpartition(".")[0] for s in sources}) > 1:
+            return TOP
+        return join_all(self.extern(f"{source}.{name}") for source in sources)
 
     # -- modules ----------------------------------------------------------------------------
     def module_value(self, dotted: str) -> Value:
@@ -463,7 +521,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             return atoms([ModuleAtom(dotted)])
         return atoms([Extern(self.lib.canonical(dotted))])
 
-    def import_member(self, base: str, name: str) -> Value:
+    def import_member(self, base: str, name: str, attribute: bool = False) -> Value:
+        """``from base import name``, or the attribute ``base.name`` (``attribute``)."""
         full = f"{base}.{name}" if base else name
         if full in self.program.modules:
             return atoms([ModuleAtom(full)])
@@ -471,6 +530,12 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if module is not None:
             if name in module.globals or name in self.program.star_names(module):
                 return self.load_global(module, name)
+            if attribute and name in self.program.stored_attrs:
+                # Set from outside (``DR_init.node = node`` in the script that then imports
+                # the module reading it): what those stores wrote, nothing before that (the
+                # read would raise AttributeError). Not for ``from base import name``: a
+                # workspace folder named like a library lacks the library's names.
+                return self.an.read(("g", module.name, name), self.frame.task)
             # A workspace folder named like a library (a ROS package's ``launch/``) that lacks the
             # name: Python would fail on it, so working code imports the library's.
             return self.extern(full) if self.lib.knows(full) else TOP
@@ -482,6 +547,14 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if constant is not None:
             return constant
         return atoms([Extern(qualname)])
+
+
+def _listed_items(value: Value, length: int) -> tuple[Value, ...] | None:
+    """The items of ``value`` when it is one sequence of ``length`` listed items."""
+    if value.is_top or len(value.atoms) != 1:
+        return None
+    [atom] = value.atoms
+    return atom.items if isinstance(atom, Seq) and len(atom.items) == length else None
 
 
 def _with_field(holder: Value, name: str, value: Value) -> Value:

@@ -95,7 +95,7 @@ class ObjectSemantics:
                 return atoms([Extern(OBJECT_NEW)])
             return TOP if found is None else found
         if isinstance(atom, ModuleAtom):
-            return self.import_member(atom.name, attr)
+            return self.import_member(atom.name, attr, attribute=True)
         if isinstance(atom, Extern):
             if attr in _NAME_ATTRS:
                 return self._class_name_attr(atom, attr)

@@ -169,6 +169,8 @@ class Program:
         self._in_folder: dict[tuple[str, str], str] = {}
         #: First components of the workspace's module names.
         self._tops: set[str] = set()
+        #: File (or package folder) name -> the modules of that name, in path order.
+        self._by_file_name: dict[str, list[str]] = {}
         #: Package name -> its folder (``pkg`` -> ``src/pkg``), for namespace folders inside it.
         self._package_folder: dict[str, str] = {}
         for mod in self.modules.values():
@@ -182,6 +184,9 @@ class Program:
                 file = ""  # an executable without the suffix: nothing can import it
             if file.isidentifier():
                 self._in_folder.setdefault((folder, file), mod.name)
+                names = self._by_file_name.setdefault(file, [])
+                if mod.name not in names:
+                    names.append(mod.name)
             if not mod.name.startswith("<"):
                 self._tops.add(mod.name.partition(".")[0])
         for mod in self.modules.values():
@@ -287,6 +292,7 @@ class Program:
         part.modules = {name: self.modules[name] for name in names}
         part.imports = {name: self.imports[name] for name in names}
         part._in_folder, part._tops, part._package_folder = self._in_folder, self._tops, self._package_folder
+        part._by_file_name = self._by_file_name
         part._fresh_tables()
         return part
 
@@ -305,6 +311,7 @@ class Program:
         self.rejected: list[tuple[Module, str]] = []
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
+        self._library_star_memo: dict[str, tuple[str, ...]] = {}
 
     def ensure(self, name: str) -> Module | None:
         """The module, its functions and classes numbered and its scopes gathered (done on
@@ -411,7 +418,10 @@ class Program:
                     scope.bound.add(node.target.id)
                 todo += [(c, scope, prefix, fid, cid) for c in _child_nodes(node)]
             stack.extend(reversed(todo))
-        mod.globals = frozenset(top.bound - top.glob)
+        # A ``global x`` at module level declares nothing; a function's ``global x`` that
+        # assigns ``x`` binds a module global (``global node`` then ``node = Node(...)`` in
+        # ``main``, read by the module's callbacks).
+        mod.globals = frozenset(top.bound.union(*(sc.glob & sc.bound for sc in scopes)))
         for sc in scopes:
             func = self.functions[sc.fid]
             func.locals = frozenset(sc.bound - sc.glob - sc.nonloc)
@@ -452,6 +462,26 @@ class Program:
         self._star_memo[mod.name] = frozenset(out)
         return self._star_memo[mod.name]
 
+    def library_star_sources(self, mod: Module) -> tuple[str, ...]:
+        """The modules outside the workspace ``mod`` star-imports at its top level (also
+        under a top-level ``if``/``try``), sorted: a name nothing else binds there can only
+        come from one of them."""
+        known = self._library_star_memo.get(mod.name)
+        if known is None:
+            found = set()
+            todo = list(mod.tree.body)
+            while todo:
+                stmt = todo.pop()
+                if isinstance(stmt, ast.ImportFrom) and any(a.name == "*" for a in stmt.names):
+                    base = self.resolve_import(mod, stmt.module, stmt.level)
+                    if base and self.ensure(base) is None:
+                        found.add(base)
+                elif isinstance(stmt, (ast.If, ast.Try)):
+                    todo.extend(stmt.body + stmt.orelse + getattr(stmt, "finalbody", [])
+                                + [s for h in getattr(stmt, "handlers", []) for s in h.body])
+            known = self._library_star_memo[mod.name] = tuple(sorted(found))
+        return known
+
     def resolve_import(self, mod: Module, name: str | None, level: int) -> str:
         """The absolute dotted name of ``from <level dots><name> import …`` inside ``mod``."""
         if level == 0:
@@ -475,7 +505,21 @@ class Program:
         found = self._from_sys_path(mod, name)
         if found in self.modules:
             return found
-        return self._inside_package(name) or found
+        return self._inside_package(name) or self._from_added_path(mod, name) or found
+
+    def _from_added_path(self, mod: Module, name: str) -> str | None:
+        """The module ``import <name>`` reaches from a module that puts a folder on
+        ``sys.path`` itself (``sys.path.append(os.path.join(os.path.dirname(__file__),
+        '../common/imp'))`` before ``import DR_init``): the one workspace module of that
+        file name, when there is exactly one. The folder is computed at run time, often from
+        where the file is installed, so it is not followed; without the edit, or with two
+        candidates, the name stays unresolved (a library's)."""
+        top, dot, rest = name.partition(".")
+        candidates = self._by_file_name.get(top, ())
+        if len(candidates) != 1 or not _edits_sys_path(mod):
+            return None
+        found = candidates[0] + dot + rest
+        return found if found in self.modules else None
 
     def _inside_package(self, name: str) -> str | None:
         parts = name.split(".")
@@ -526,6 +570,22 @@ class Program:
                 return parent
             parent = outer.parent
         return None
+
+
+_PATH_EDITS = frozenset({"append", "insert", "extend"})
+
+
+def _edits_sys_path(mod: Module) -> bool:
+    """Whether ``mod`` adds folders to ``sys.path`` (``sys.path.append(…)``,
+    ``sys.path.insert(0, …)``, ``sys.path += …``). Reads the tree: asked only for an import
+    nothing else resolves."""
+    for node in ast.walk(mod.tree):
+        target = node.func.value if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr in _PATH_EDITS else node.target if isinstance(node, ast.AugAssign) else None
+        if isinstance(target, ast.Attribute) and target.attr == "path" \
+                and isinstance(target.value, ast.Name) and target.value.id == "sys":
+            return True
+    return False
 
 
 def _child_nodes(node: ast.AST) -> list[ast.AST]:

@@ -63,6 +63,21 @@ def interface_types(value: Value) -> list[str | None]:
     return sorted(found) if found else [None]
 
 
+#: Entity kind -> the interface kind its type is (``std_msgs/msg/String`` for a publisher).
+_INTERFACE_KINDS = {"publishers": "msg", "subscriptions": "msg", "services": "srv", "clients": "srv",
+                    "action_servers": "action", "action_clients": "action"}
+
+
+def fitting_types(types: list[str | None], kind: str) -> list[str | None]:
+    """The possible types of an entity of ``kind`` among ``types``: a name the code can only
+    take from one of several star-imported interface modules (``from arm_msgs.msg import *``
+    and ``from arm_msgs.srv import *``) is the service for a client and the message for a
+    publisher. When none fits (a mistake in the code), all are kept, as written."""
+    wanted = _INTERFACE_KINDS[kind]
+    fits = [t for t in types if t is not None and t.split("/")[1] == wanted]
+    return fits if fits and None not in types else types
+
+
 def _policy(value: Value | None) -> str | None:
     """A QoS policy as its lower-case name (``ReliabilityPolicy.BEST_EFFORT``, the deprecated
     ``RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT``, ``"best_effort"``); ``None`` when unknown,
@@ -336,7 +351,7 @@ class GraphBuilder:
             return []
         if eff.kind in ENTITY_KINDS:
             kind, name_arg = ENTITY_KINDS[eff.kind]
-            types = interface_types(eff.arg("type"))
+            types = fitting_types(interface_types(eff.arg("type")), kind)
             qos = qos_of(eff.arg("qos"), dict(eff.args).get("qos_for_depth")) \
                 if kind in ("publishers", "subscriptions") else None
             callback = self.callback_name(eff.arg("callback")) if "callback" in dict(eff.args) \
