@@ -310,6 +310,25 @@ def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypa
     assert len(read) == len(list(root.rglob("*.py")))
 
 
+def test_a_bare_import_of_a_workspace_file_name_parses_no_kept_module(tmp_path: Path, monkeypatch) -> None:
+    """``import monitor`` in a kept module names a workspace file without resolving to it (no
+    ``sys.path`` edit there): whether the module edits ``sys.path`` comes from its outline, so
+    an edit elsewhere still reads and parses the edited group only."""
+    import flake8_rosgraph.workspace as workspace_module
+    probe = {"sensors/sensors/probe.py": "import rclpy\nimport monitor\n\n\ndef main():\n"
+                                         "    rclpy.init()\n    monitor.main()\n"}
+    root = write(tmp_path / "ws", {**SENSORS, **NAV, **BRINGUP, **probe})
+    _report(root)
+    read = []
+    original = workspace_module.read_module
+    monkeypatch.setattr(workspace_module, "read_module",
+                        lambda path, *args, **kwargs: read.append(path) or original(path, *args, **kwargs))
+    topics = root / "nav/nav/topics.py"
+    topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
+    assert [code for _, _, code, _ in _report(root)] == ["ROS003", "ROS001"]
+    assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
+
+
 def test_every_group_of_a_fleet_workspace_can_be_kept(tmp_path: Path, monkeypatch) -> None:
     """A group whose facts the format cannot hold is analysed again on every run, silently slow:
     the synthetic fleet (timers that never fire, QoS durations of infinity) and examples/ must

@@ -115,3 +115,21 @@ def attribute_stores(tree: ast.Module, mentions_setattr: bool) -> frozenset[str]
                    if isinstance(node, ast.Constant) and isinstance(node.value, str)
                    and node.value.isidentifier())
     return frozenset(out)
+
+
+_PATH_EDITS = frozenset({"append", "insert", "extend"})
+
+
+def edits_sys_path(tree: ast.Module, mentions_sys_path: bool) -> bool:
+    """Whether the module adds folders to ``sys.path`` (``sys.path.append(…)``,
+    ``sys.path.insert(0, …)``, ``sys.path += …``) anywhere; only a module whose text mentions
+    ``sys.path`` (``mentions_sys_path``) is walked."""
+    if not mentions_sys_path:
+        return False
+    for node in ast.walk(tree):
+        target = node.func.value if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr in _PATH_EDITS else node.target if isinstance(node, ast.AugAssign) else None
+        if isinstance(target, ast.Attribute) and target.attr == "path" \
+                and isinstance(target.value, ast.Name) and target.value.id == "sys":
+            return True
+    return False

@@ -38,6 +38,8 @@ class Module:
     declares: tuple[str, ...] | None = None
     #: The attribute names it assigns (:func:`.outline.attribute_stores`).
     attribute_stores: frozenset[str] = frozenset()
+    #: Whether it adds folders to ``sys.path`` (:func:`.outline.edits_sys_path`).
+    edits_sys_path: bool = False
     #: Reads and parses the file, for a module made without its tree (its group's facts were
     #: expected from the cache): the tree and the wide lines.
     source: Callable[[], tuple[ast.Module, dict[int, str]]] | None = None
@@ -516,7 +518,7 @@ class Program:
         candidates, the name stays unresolved (a library's)."""
         top, dot, rest = name.partition(".")
         candidates = self._by_file_name.get(top, ())
-        if len(candidates) != 1 or not _edits_sys_path(mod):
+        if len(candidates) != 1 or not mod.edits_sys_path:
             return None
         found = candidates[0] + dot + rest
         return found if found in self.modules else None
@@ -572,20 +574,6 @@ class Program:
         return None
 
 
-_PATH_EDITS = frozenset({"append", "insert", "extend"})
-
-
-def _edits_sys_path(mod: Module) -> bool:
-    """Whether ``mod`` adds folders to ``sys.path`` (``sys.path.append(…)``,
-    ``sys.path.insert(0, …)``, ``sys.path += …``). Reads the tree: asked only for an import
-    nothing else resolves."""
-    for node in ast.walk(mod.tree):
-        target = node.func.value if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
-            and node.func.attr in _PATH_EDITS else node.target if isinstance(node, ast.AugAssign) else None
-        if isinstance(target, ast.Attribute) and target.attr == "path" \
-                and isinstance(target.value, ast.Name) and target.value.id == "sys":
-            return True
-    return False
 
 
 def _child_nodes(node: ast.AST) -> list[ast.AST]:
