@@ -574,8 +574,6 @@ class Program:
         return None
 
 
-
-
 def _child_nodes(node: ast.AST) -> list[ast.AST]:
     """``ast.iter_child_nodes(node)`` without the nodes that hold nothing to collect, in the
     same order; a plain loop over ``_fields``, as this walk visits every node of a module."""
