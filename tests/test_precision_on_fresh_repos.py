@@ -1,0 +1,257 @@
+"""Findings a read of every finding on 13 further public repositories (rovers, arms, drivers,
+ros2/demos and ros2/examples) found false, each fixed by a general mechanism: a realistic
+multi-file workspace with the pattern that was misjudged, and a near-identical twin holding
+the real bug, which must still be reported."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from flake8_rosgraph.findings import Finding, localised_message
+from flake8_rosgraph.graph.model import Location
+from flake8_rosgraph.rules import merge_same_text
+
+from test_recall_mechanisms import findings
+from test_workspace_discovery import PACKAGE_XML, setup_py, write
+
+
+# -- one line printed twice: one finding -------------------------------------------------------------
+RECONNECTING_DRIVER = """
+    import time
+
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    class GnssDriver(Node):
+        def __init__(self):
+            super().__init__('gnss_driver')
+            self.fix = self.create_publisher(String, 'fix_text', 10)
+            self.create_timer(0.1, self.poll)
+            self.create_timer(5.0, self.{second_callback})
+
+        def poll(self):
+            if not self.connected():
+                self.reconnect()
+
+        def send_correction(self):
+            if not self.connected():
+                self.reconnect()
+
+        def connected(self):
+            return False
+
+        def reconnect(self):
+            time.sleep({pause})
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(GnssDriver())
+"""
+
+
+def gnss_workspace(root: Path, second_callback: str, pause: str = "2.0") -> Path:
+    return write(root, {
+        "gnss/package.xml": PACKAGE_XML.format(name="gnss", build="ament_python"),
+        "gnss/setup.py": setup_py("gnss", "'driver = gnss.driver:main'"),
+        "gnss/gnss/__init__.py": "",
+        "gnss/gnss/driver.py": RECONNECTING_DRIVER.format(second_callback=second_callback, pause=pause),
+    })
+
+
+def test_one_callback_two_timers_run_is_reported_once(tmp_path: Path) -> None:
+    """njord2026_ws's GNSS driver: two timers run one callback that reaches a sleep; the two
+    timers gave two findings that read the same, at the callback's call."""
+    root = gnss_workspace(tmp_path, "poll")
+    reported = findings(root, ["ROS101"])
+    assert [(code, line) for code, _, line, _ in reported] == [("ROS101", 17)]
+
+
+def test_two_callbacks_reaching_the_sleep_are_two_findings(tmp_path: Path) -> None:
+    """The twin: two callbacks reach the sleep, each reported at its own call."""
+    root = gnss_workspace(tmp_path, "send_correction")
+    reported = findings(root, ["ROS101"])
+    assert [(code, line) for code, _, line, _ in reported] == [("ROS101", 17), ("ROS101", 21)]
+
+
+def test_merging_keeps_every_related_location_once() -> None:
+    here = Location("pkg/pkg/driver.py", 26, 13)
+    timer_a, timer_b = Location("pkg/pkg/driver.py", 12, 9), Location("pkg/pkg/driver.py", 13, 9)
+    merged = merge_same_text([Finding(here, "ROS101", "m", ((timer_b, "timer"),)),
+                              Finding(here, "ROS101", "m", ((timer_a, "timer"), (timer_b, "timer")))])
+    assert merged == [Finding(here, "ROS101", "m", ((timer_a, "timer"), (timer_b, "timer")))]
+
+
+def test_a_partner_path_is_made_relative_once(tmp_path: Path) -> None:
+    """ros2-lerobot-swerve-platform: two publishers at one line (one helper, two calls) made
+    ``repos/x/repos/x/proxy.py:136`` of the partner's path; and ``proxy.py:13`` must not be
+    rewritten inside ``proxy.py:136``."""
+    pub_a, pub_b = Location("nodes/relay/proxy.py", 136, 19), Location("nodes/relay/proxy.py", 136, 25)
+    early = Location("nodes/relay/proxy.py", 13, 5)
+    finding = Finding(Location("nodes/relay/proxy.py", 141, 13), "ROS002",
+                      "subscribes to topic '/b' that it publishes at nodes/relay/proxy.py:136 "
+                      "and at nodes/relay/proxy.py:13",
+                      ((pub_a, "publisher"), (pub_b, "publisher"), (early, "publisher")))
+    root = tmp_path / "ws"
+    text = localised_message(root, finding)
+    assert text == (f"subscribes to topic '/b' that it publishes at {(root / 'nodes/relay/proxy.py').as_posix()}:136 "
+                    f"and at {(root / 'nodes/relay/proxy.py').as_posix()}:13")
+
+
+# -- ROS107: rospy modules of a package built for ROS 1 and ROS 2 ------------------------------------
+DUAL_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3"><name>multi_sync</name><version>0.1.0</version><description>d</description>
+<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>
+<buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>
+<depend condition="$ROS_VERSION == 1">rospy</depend>
+<depend condition="$ROS_VERSION == 2">rclpy</depend>
+<export><build_type condition="$ROS_VERSION == 1">catkin</build_type>
+<build_type condition="$ROS_VERSION == 2">ament_cmake</build_type></export></package>
+"""
+
+SYNC_THREAD = """
+    {ros_import}
+    from diagnostic_msgs.msg import DiagnosticStatus, KeyValue
+    from std_msgs.msg import String
+
+    from multi_sync.naming import host_name
+
+
+    class SyncThread:
+        def __init__(self, uri):
+            self.host = host_name(uri)
+
+        def report(self):
+            status = DiagnosticStatus()
+            status.level = 0
+            return [String('sync started on %s' % self.host), KeyValue('host', self.host), status]
+
+
+    if __name__ == '__main__':
+        print(SyncThread('localhost:11311').report())
+"""
+
+#: Shared by the package's ROS 1 and ROS 2 code: it joins the rospy module to an rclpy group.
+NAMING = """
+    try:
+        import rclpy
+    except ImportError:
+        rclpy = None
+
+
+    def host_name(uri):
+        return uri.split(':')[0]
+"""
+
+
+def sync_workspace(root: Path, ros_import: str) -> Path:
+    return write(root, {
+        "multi_sync/package.xml": DUAL_PACKAGE_XML,
+        "multi_sync/CMakeLists.txt": "cmake_minimum_required(VERSION 3.5)\nproject(multi_sync)\n",
+        "multi_sync/src/multi_sync/__init__.py": "",
+        "multi_sync/src/multi_sync/naming.py": NAMING,
+        "multi_sync/src/multi_sync/sync_thread.py": SYNC_THREAD.format(ros_import=ros_import),
+    })
+
+
+def test_genpy_positional_messages_of_a_rospy_module_are_not_judged(tmp_path: Path) -> None:
+    """fkie-multi-agent-suite: its discovery and sync packages build C++ for ROS 2 and keep
+    their rospy modules, whose genpy messages take positional arguments (32 false ROS107)."""
+    root = sync_workspace(tmp_path, "import rospy")
+    assert findings(root, ["ROS107"]) == []
+
+
+def test_positional_messages_of_an_rclpy_module_are_still_reported(tmp_path: Path) -> None:
+    """The twin: the same module written for rclpy builds messages that raise (a ``byte`` takes
+    ``bytes`` in ROS 2, and messages take keyword arguments only)."""
+    root = sync_workspace(tmp_path, "import rclpy")
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS107"])] == [("ROS107", 14), ("ROS107", 15), ("ROS107", 15)]
+
+
+# -- ROS007: a script's node under ``if __name__ == '__main__':`` in a module another imports ----------
+CAROUSEL = """
+    #!/usr/bin/env python3
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Float32
+
+    from lab.hall_sensor import hall_state
+
+
+    def publish_position(node, value):
+        node.position.publish(Float32(data=float(hall_state(value))))
+
+
+    if __name__ == '__main__':
+        rclpy.init()
+        node = Node('carousel')
+        node.position = node.create_publisher(Float32, 'carousel/position', 10)
+        rclpy.spin(node)
+"""
+
+HALL_SENSOR = """
+    #!/usr/bin/env python3
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Bool
+
+
+    def hall_state(raw):
+        return (raw & 0x0F) != 0
+
+
+    {guard}
+        rclpy.init()
+        node = Node('hall_sensor')
+        node.create_publisher(Bool, 'hall/state', 10)
+        rclpy.spin(node)
+"""
+
+LAB_CMAKE = """
+    cmake_minimum_required(VERSION 3.5)
+    project(lab)
+    find_package(ament_cmake_python REQUIRED)
+    ament_python_install_package(lab)
+    install(PROGRAMS lab/carousel.py lab/hall_sensor.py DESTINATION lib/${PROJECT_NAME})
+    ament_package()
+"""
+
+LAB_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='lab', executable='carousel.py', name='carousel_inner'),
+            Node(package='lab', executable='carousel.py', name='carousel_outer'),
+        ])
+"""
+
+
+def lab_workspace(root: Path, guard: str) -> Path:
+    return write(root, {
+        "lab/package.xml": PACKAGE_XML.format(name="lab", build="ament_cmake"),
+        "lab/CMakeLists.txt": LAB_CMAKE,
+        "lab/lab/__init__.py": "",
+        "lab/lab/carousel.py": CAROUSEL,
+        "lab/lab/hall_sensor.py": HALL_SENSOR.format(guard=guard),
+        "lab/launch/lab.launch.py": LAB_LAUNCH,
+    })
+
+
+def test_a_node_under_the_main_guard_of_an_imported_script_is_not_started(tmp_path: Path) -> None:
+    """nova's science scripts: ``carousel.py`` imports a helper from ``hall_sensor.py``, whose
+    ``if __name__ == '__main__':`` creates its own node; the launch action naming the carousel
+    does not rename that node too (2 false ROS007)."""
+    root = lab_workspace(tmp_path, "if __name__ == '__main__':")
+    assert findings(root, ["ROS007"]) == []
+
+
+def test_a_node_an_imported_module_creates_on_import_is_still_started(tmp_path: Path) -> None:
+    """The twin: without the guard, importing the helper creates its node in the carousel's
+    process, and the launch action's name goes to both."""
+    root = lab_workspace(tmp_path, "if True:")
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS007"])] == [("ROS007", 7), ("ROS007", 8)]
