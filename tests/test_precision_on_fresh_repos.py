@@ -255,3 +255,120 @@ def test_a_node_an_imported_module_creates_on_import_is_still_started(tmp_path: 
     process, and the launch action's name goes to both."""
     root = lab_workspace(tmp_path, "if True:")
     assert [(code, line) for code, _, line, _ in findings(root, ["ROS007"])] == [("ROS007", 7), ("ROS007", 8)]
+
+
+# -- ROS006/ROS002/ROS007: "empty = disabled", and one node configured by two bring-ups ---------------
+SAFETY_MONITOR = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import Twist
+    from std_msgs.msg import Float32MultiArray
+
+
+    class SafetyMonitor(Node):
+        def __init__(self):
+            super().__init__('safety_monitor')
+            self.declare_parameter('input_cmd_topic', 'cmd_vel_in')
+            self.declare_parameter('output_cmd_topic', 'cmd_vel_out')
+            self.declare_parameter('input_track_topic', '')   # empty = disabled
+            self.declare_parameter('output_track_topic', '')  # empty = disabled
+            self.input_cmd = str(self.get_parameter('input_cmd_topic').value)
+            self.output_cmd = str(self.get_parameter('output_cmd_topic').value)
+            self.input_track = str(self.get_parameter('input_track_topic').value)
+            self.output_track = str(self.get_parameter('output_track_topic').value)
+            self.create_subscription(Twist, self.input_cmd, self.on_cmd, 10)
+            self.cmd_pub = self.create_publisher(Twist, self.output_cmd, 10)
+            {track_guard}self.create_subscription(Float32MultiArray, self.input_track, self.on_track, 10)
+            {indent}self.track_pub = self.create_publisher(Float32MultiArray, self.output_track, 10)
+
+        def on_cmd(self, msg):
+            self.cmd_pub.publish(msg)
+
+        def on_track(self, msg):
+            self.track_pub.publish(msg)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(SafetyMonitor())
+"""
+
+PLANNER = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import Twist
+
+
+    class Planner(Node):
+        def __init__(self):
+            super().__init__('planner')
+            self.create_publisher(Twist, 'cmd_vel_plan', 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Planner())
+"""
+
+BRINGUP = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='rover', executable='{executable}', name='safety_monitor',
+                 parameters=[{{'input_cmd_topic': '{source}', 'output_cmd_topic': '{target}'}}]),
+        ])
+"""
+
+
+#: The track relay's creation under ``if`` both names are set (written on one line with the call).
+GUARDED = "if self.input_track and self.output_track:\n                "
+
+
+def rover_workspace(root: Path, track_guard: str, second_executable: str = "safety_monitor") -> Path:
+    return write(root, {
+        "rover/package.xml": PACKAGE_XML.format(name="rover", build="ament_python"),
+        "rover/setup.py": setup_py("rover", "'safety_monitor = rover.safety_monitor:main', "
+                                            "'planner = rover.planner:main'"),
+        "rover/rover/__init__.py": "",
+        "rover/rover/safety_monitor.py": SAFETY_MONITOR.format(
+            track_guard=track_guard, indent=" " * 4 if track_guard else ""),
+        "rover/rover/planner.py": PLANNER,
+        "rover/launch/mapping.launch.py": BRINGUP.format(
+            executable="safety_monitor", source="cmd_vel_plan", target="/cmd_vel_safe"),
+        "rover/launch/coverage.launch.py": BRINGUP.format(
+            executable=second_executable, source="/cmd_vel_safe", target="cmd_vel_raw"),
+    })
+
+
+def test_an_optional_end_named_by_an_empty_default_is_not_judged(tmp_path: Path) -> None:
+    """ros2-rover's lidar safety monitor creates its track relay only ``if`` both topic
+    parameters are set; their empty defaults made 2 false ROS006, a self-loop over ``''``
+    (ROS002) and two launched monitors "talking" over ``''`` (ROS007)."""
+    root = rover_workspace(tmp_path, GUARDED)
+    assert findings(root, ["ROS002", "ROS006"]) == []
+
+
+def test_an_end_always_created_with_an_empty_default_is_still_invalid(tmp_path: Path) -> None:
+    """The twin: created unconditionally, the empty default makes rclpy raise at start-up."""
+    root = rover_workspace(tmp_path, "")
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS006"])] == [("ROS006", 20), ("ROS006", 21)]
+
+
+def test_one_node_configured_by_two_bringups_is_no_duplicate(tmp_path: Path) -> None:
+    """ros2-rover: two bring-ups start the safety monitor under one name, one remapping its
+    output onto what the other's input reads; the two instances are two deployments, not
+    two nodes running together (3 false ROS007)."""
+    root = rover_workspace(tmp_path, GUARDED)
+    assert findings(root, ["ROS007"]) == []
+
+
+def test_two_programs_of_one_name_in_two_bringups_that_talk_are_still_duplicates(tmp_path: Path) -> None:
+    """The twin: the second bring-up starts another program under the same name, and the two
+    talk: a system split over two launch files runs as one."""
+    root = rover_workspace(tmp_path, GUARDED, "planner")
+    reported = findings(root, ["ROS007"])
+    assert [(code, path) for code, path, _, _ in reported] == [
+        ("ROS007", "rover/launch/coverage.launch.py"), ("ROS007", "rover/launch/mapping.launch.py")]
