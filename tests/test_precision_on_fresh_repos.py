@@ -372,3 +372,342 @@ def test_two_programs_of_one_name_in_two_bringups_that_talk_are_still_duplicates
     reported = findings(root, ["ROS007"])
     assert [(code, path) for code, path, _, _ in reported] == [
         ("ROS007", "rover/launch/coverage.launch.py"), ("ROS007", "rover/launch/mapping.launch.py")]
+
+
+# -- ROS001/ROS003: ros2_control controllers, and names handed to installed nodes as parameters --------
+ARM_INTERFACE = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import TwistStamped, WrenchStamped
+    from std_msgs.msg import Float64MultiArray, String
+
+
+    class ArmInterface(Node):
+        def __init__(self):
+            super().__init__('arm_interface')
+            controller = 'cartesian_vel_controller'
+            self.velocity = self.create_publisher(TwistStamped, f'/{{controller}}/commands', 10)
+            self.gripper = self.create_publisher(Float64MultiArray, '/gripper_controller/commands', 10)
+            self.state = self.create_publisher(String, '/arm/state', 10)
+            self.create_subscription(String, '/arm/goal', self.on_goal, 10)
+            self.create_subscription(WrenchStamped, '{wrench}', self.on_wrench, 10)
+
+        def on_goal(self, msg):
+            self.state.publish(msg)
+
+        def on_wrench(self, msg):
+            self.get_logger().info(str(msg.wrench.force.x))
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ArmInterface())
+"""
+
+ARM_TELEOP = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    class ArmTeleop(Node):
+        def __init__(self):
+            super().__init__('arm_teleop')
+            self.goal = self.create_publisher(String, '/arm/goal', 10)
+            self.create_subscription(String, '/arm/state', self.on_state, 10)
+
+        def on_state(self, msg):
+            self.get_logger().info(msg.data)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ArmTeleop())
+"""
+
+CONTROLLERS_YAML = """
+    controller_manager:
+      ros__parameters:
+        update_rate: 1000
+        cartesian_vel_controller:
+          type: arm_controllers/CartesianVelocityController
+        gripper_controller:
+          type: forward_command_controller/ForwardCommandController
+        robot_state_broadcaster:
+          type: arm_broadcasters/RobotStateBroadcaster
+"""
+
+ARM_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.substitutions import PathJoinSubstitution
+    from launch_ros.actions import Node
+    from launch_ros.substitutions import FindPackageShare
+
+
+    def generate_launch_description():
+        controllers = PathJoinSubstitution([FindPackageShare('arm_bringup'), 'config', 'controllers.yaml'])
+        return LaunchDescription([
+            Node(package='controller_manager', executable='ros2_control_node',
+                 parameters=[controllers], output='screen'),
+            Node(package='controller_manager', executable='spawner',
+                 arguments=['cartesian_vel_controller', 'robot_state_broadcaster']),
+            Node(package='arm_interface', executable='arm_interface'),
+            Node(package='arm_interface', executable='arm_teleop'),
+        ])
+"""
+
+
+def arm_workspace(root: Path, wrench: str = "/robot_state_broadcaster/external_wrench") -> Path:
+    return write(root, {
+        "arm_interface/package.xml": PACKAGE_XML.format(name="arm_interface", build="ament_python"),
+        "arm_interface/setup.py": setup_py("arm_interface", "'arm_interface = arm_interface.interface:main', "
+                                                            "'arm_teleop = arm_interface.teleop:main'"),
+        "arm_interface/arm_interface/__init__.py": "",
+        "arm_interface/arm_interface/interface.py": ARM_INTERFACE.format(wrench=wrench),
+        "arm_interface/arm_interface/teleop.py": ARM_TELEOP,
+        "arm_bringup/package.xml": PACKAGE_XML.format(name="arm_bringup", build="ament_python"),
+        "arm_bringup/setup.py": "from setuptools import setup\nsetup(name='arm_bringup')\n",
+        "arm_bringup/config/controllers.yaml": CONTROLLERS_YAML,
+        "arm_bringup/launch/arm.launch.py": ARM_LAUNCH,
+    })
+
+
+def test_the_topics_of_configured_controllers_are_their_ends(tmp_path: Path) -> None:
+    """adl-ros2: the arm interface commands ``/cartesian_vel_controller/commands`` and reads
+    ``/franka_robot_state_broadcaster/...``, controllers its controllers.yaml configures for the
+    (installed) controller manager: C++ plugins are their other ends (3 false findings)."""
+    root = arm_workspace(tmp_path)
+    assert findings(root, ["ROS001", "ROS003"]) == []
+
+
+def test_a_topic_of_no_configured_controller_is_still_dangling(tmp_path: Path) -> None:
+    """The twin: the wrench is read under a broadcaster name no controller has (a slip of
+    ``robot_state_broadcaster``); the interface's other subscription is wired, so it is
+    the odd one out."""
+    root = arm_workspace(tmp_path, "/robot_state_broadcster/external_wrench")
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS001", "ROS003"])] == [("ROS003", 15)]
+
+
+HEADING = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import Imu, MagneticField
+
+
+    class Magnetometer(Node):
+        def __init__(self):
+            super().__init__('magnetometer')
+            self.field = self.create_publisher(MagneticField, '/mag/field', 10)
+            self.heading = self.create_publisher(Imu, '{heading}', 10)
+            self.create_timer(0.1, self.read)
+
+        def read(self):
+            self.field.publish(MagneticField())
+            self.heading.publish(Imu())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Magnetometer())
+"""
+
+COMPASS = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import MagneticField
+
+
+    class CompassDisplay(Node):
+        def __init__(self):
+            super().__init__('compass_display')
+            self.create_subscription(MagneticField, '/mag/field', self.show, 10)
+
+        def show(self, msg):
+            self.get_logger().info(str(msg.magnetic_field.x))
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(CompassDisplay())
+"""
+
+EKF_YAML = """
+    ekf_filter_node:
+      ros__parameters:
+        frequency: 30.0
+        world_frame: odom
+        odom0: /wheel/odometry
+        imu0: /mag/heading_imu
+        imu0_config: [false, false, false, false, false, true]
+"""
+
+LOCALIZATION_LAUNCH = """
+    import os
+
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        params = os.path.join(get_package_share_directory('rover_localization'), 'config', 'ekf.yaml')
+        return LaunchDescription([
+            Node(package='robot_localization', executable='ekf_node', name='ekf_filter_node',
+                 parameters=[params]),
+            Node(package='rover_sensors', executable='magnetometer'),
+            Node(package='rover_sensors', executable='compass_display'),
+        ])
+"""
+
+
+def localization_workspace(root: Path, heading: str) -> Path:
+    return write(root, {
+        "rover_sensors/package.xml": PACKAGE_XML.format(name="rover_sensors", build="ament_python"),
+        "rover_sensors/setup.py": setup_py("rover_sensors", "'magnetometer = rover_sensors.magnetometer:main', "
+                                                            "'compass_display = rover_sensors.compass:main'"),
+        "rover_sensors/rover_sensors/__init__.py": "",
+        "rover_sensors/rover_sensors/magnetometer.py": HEADING.format(heading=heading),
+        "rover_sensors/rover_sensors/compass.py": COMPASS,
+        "rover_localization/package.xml": PACKAGE_XML.format(name="rover_localization", build="ament_python"),
+        "rover_localization/setup.py": "from setuptools import setup\nsetup(name='rover_localization')\n",
+        "rover_localization/config/ekf.yaml": EKF_YAML,
+        "rover_localization/launch/localization.launch.py": LOCALIZATION_LAUNCH,
+    })
+
+
+def test_a_name_an_installed_node_is_configured_with_is_its_end(tmp_path: Path) -> None:
+    """nova: robot_localization's EKF reads ``imu1: /mag/heading_imu`` from the parameter file
+    the launch file hands it; the magnetometer's heading output is its input."""
+    root = localization_workspace(tmp_path, "/mag/heading_imu")
+    assert findings(root, ["ROS001"]) == []
+
+
+def test_a_name_no_installed_node_is_configured_with_is_still_dangling(tmp_path: Path) -> None:
+    """The twin: the heading goes to a name the EKF is not configured with."""
+    root = localization_workspace(tmp_path, "/mag/heading")
+    assert [(code, line) for code, _, line, _ in findings(root, ["ROS001"])] == [("ROS001", 10)]
+
+
+# -- ROS003: a launched node given a parameter file the workspace does not hold -----------------------
+DELAY_NODE = """
+    import importlib
+
+    import rclpy
+    from rclpy.node import Node
+
+
+    class DelayNode(Node):
+        def __init__(self):
+            super().__init__('delay_node')
+            self.declare_parameter('message_type', 'std_msgs/msg/String')
+            self.declare_parameter('input_topic', 'input_topic')
+            self.declare_parameter('output_topic', 'output_topic')
+            package, _, name = self.get_parameter('message_type').value.split('/')
+            message = getattr(importlib.import_module(package + '.msg'), name)
+            self.out = self.create_publisher(message, self.get_parameter('output_topic').value, 10)
+            self.create_subscription(message, self.get_parameter('input_topic').value, self.out.publish, 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(DelayNode())
+"""
+
+RIM_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import PoseStamped
+    from std_msgs.msg import String
+
+
+    class RimNode(Node):
+        def __init__(self):
+            super().__init__('rim_node')
+            self.declare_parameter('rim_topic', '/rim_delayed')
+            self.create_subscription(String, self.get_parameter('rim_topic').value, self.on_rim, 10)
+            self.create_subscription(String, '/rim', self.on_rim, 10)
+            self.pose = self.create_publisher(PoseStamped, '/haptic/pose', 10)
+
+        def on_rim(self, msg):
+            self.pose.publish(PoseStamped())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(RimNode())
+"""
+
+RIM_MODEL = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    def main():
+        rclpy.init()
+        node = Node('rim_model')
+        rim = node.create_publisher(String, '/rim', 10)
+        node.create_timer(0.01, lambda: rim.publish(String(data='rim')))
+        rclpy.spin(node)
+"""
+
+RIM_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument
+    from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+    from launch_ros.actions import Node
+    from launch_ros.substitutions import FindPackageShare
+
+
+    def generate_launch_description():
+        config = PathJoinSubstitution([FindPackageShare('rim'), 'config', LaunchConfiguration('config_file')])
+        return LaunchDescription([
+            DeclareLaunchArgument('config_file', default_value='{config_file}'),
+            Node(package='rim', executable='delay_node', name='rim_delay', parameters=[config]),
+            Node(package='rim', executable='rim_node', name='rim_node', parameters=[config]),
+            Node(package='rim', executable='rim_model'),
+        ])
+"""
+
+RIM_YAML = """
+    rim_delay:
+      ros__parameters:
+        input_topic: /rim
+        output_topic: /rim_delayed
+    rim_node:
+      ros__parameters:
+        rim_topic: /rim_delayed
+"""
+
+
+def rim_workspace(root: Path, config_file: str) -> Path:
+    return write(root, {
+        "rim/package.xml": PACKAGE_XML.format(name="rim", build="ament_python"),
+        "rim/setup.py": setup_py("rim", "'delay_node = rim.delay_node:main', 'rim_node = rim.rim_node:main', "
+                                        "'rim_model = rim.rim_model:main'"),
+        "rim/rim/rim_model.py": RIM_MODEL,
+        "rim/rim/__init__.py": "",
+        "rim/rim/delay_node.py": DELAY_NODE,
+        "rim/rim/rim_node.py": RIM_NODE,
+        "rim/config/rim_sim.yaml": RIM_YAML,
+        "rim/launch/rim.launch.py": RIM_LAUNCH.format(config_file=config_file),
+    })
+
+
+def test_names_a_missing_parameter_file_may_set_are_unknown(tmp_path: Path) -> None:
+    """adl-ros2: the launch file's default parameter file is not in the workspace (the user
+    passes ``config_file:=rim_fr3_config.yaml``); the delay node's output, named by a
+    parameter that file sets, is not its code default, and the RIM node's input may be it."""
+    root = rim_workspace(tmp_path, "rim_default.yaml")
+    assert findings(root, ["ROS003"]) == []
+
+
+def test_names_a_readable_parameter_file_leaves_alone_keep_their_defaults(tmp_path: Path) -> None:
+    """The twin: the launch file's file is in the workspace and names the delay output
+    ``/rim_delayed``, which the RIM node reads; a misspelt setting of the RIM node's input is
+    reported (at its subscription, named by the setting)."""
+    root = rim_workspace(tmp_path, "rim_sim.yaml")
+    assert findings(root, ["ROS003"]) == []
+    config = root / "rim/config/rim_sim.yaml"
+    config.write_text(config.read_text().replace("rim_topic: /rim_delayed", "rim_topic: /rim_delyed"))
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS003"])] == [("ROS003", "rim/rim/rim_node.py")]

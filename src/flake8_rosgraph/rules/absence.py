@@ -47,6 +47,13 @@ outside the workspace by nature: see :mod:`.infrastructure`), when
   executable, a C++ executable it cannot tie to code): that program's own
   relative names land there.
 
+A ros2_control controller a controller manager's parameters configure
+(``arm_controller.type: joint_trajectory_controller/JointTrajectoryController``)
+is such a program too: the names under ``/arm_controller/`` are its ends. And an
+absolute name a launch file hands such a node as a parameter value
+(robot_localization's ``imu1: /mag/heading_imu``) may be its end: that name
+(only that one) is not dangling either.
+
 A name a launch file remaps such a node of unseen code onto (``teleop_twist_joy``
 started with ``('/cmd_vel', '/cmd_vel_intuitive')``) is not dangling at all: the
 launch file says that program uses it, and it is the other end the analysis cannot see.
@@ -100,7 +107,8 @@ from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
-from .launch_context import under_any, unseen_code_names, unseen_remap_targets
+from .launch_context import (controller_namespaces, under_any, unseen_code_names, unseen_parameter_names,
+                             unseen_remap_targets)
 from .near_miss import NearMissFinder
 from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
@@ -122,12 +130,14 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph))
+        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph)
+                      | controller_namespaces(graph))
+        configured = once("unseen parameter names", graph, lambda: unseen_parameter_names(graph))
         peer_kind = PEER_KIND[self.kind]
         scopes = once("launch scopes", graph, lambda: LaunchScopes(graph.systems))
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                       and not under_any(ep.entity.name, unseen)
+                       and not under_any(ep.entity.name, unseen) and ep.entity.name not in configured
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return

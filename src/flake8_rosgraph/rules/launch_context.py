@@ -8,8 +8,12 @@ at the root.
 """
 from __future__ import annotations
 
+import re
+from typing import Any, Iterator
+
 from ..graph import names
 from ..graph.model import RosGraph, RosNode
+from ..launch.model import LaunchedNode
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
 _UNMATCHED = ("unknown", "missing-executable")
@@ -67,6 +71,63 @@ def _landing(target: str, namespace: str | None) -> str | None:
     if namespace is None:
         return None
     return namespace.rstrip("/") + "/" + target
+
+
+#: A ros2_control controller's ``type``: ``package/Class`` (``joint_trajectory_controller/JointTrajectoryController``).
+_PLUGIN_TYPE = re.compile(r"[A-Za-z_]\w*/[A-Za-z_]\w*")
+
+
+def _unseen_settings(graph: RosGraph) -> Iterator[tuple[LaunchedNode, str, Any]]:
+    """``(launched node, parameter, value)`` for every value a launch file hands a node whose
+    code the analysis does not see (an installed package's executable, a C++ one read in part):
+    inline, and in the sections of its parameter files that may be meant for it (every section
+    when its name is not known)."""
+    for system in graph.systems:
+        analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
+        for launched in system.nodes:
+            if id(launched) in analysed:
+                continue
+            for param in launched.params:
+                yield launched, param.name, param.value
+            fqn = None if launched.name is None or launched.unresolved \
+                else names.fqn(launched.name, launched.namespace or "/")
+            for file in launched.param_files:
+                for section in system.parameter_files.get(file.path or "", []):
+                    if fqn is None or section.matches(fqn):
+                        for name, value, _ in section.settings:
+                            yield launched, name, value
+
+
+def controller_namespaces(graph: RosGraph) -> frozenset[str]:
+    """Where the ros2_control controllers the workspace configures have their names.
+
+    A controller manager (``ros2_control_node``, installed) given ``<controller>.type:
+    package/Class`` loads that controller as a node ``<controller>`` in its own namespace, and
+    the controller's topics, services and actions (``/arm_controller/joint_trajectory``,
+    ``/franka_robot_state_broadcaster/robot_state``) live under that node: a C++ plugin outside
+    the workspace is their other end. Only names under a configured controller's name count:
+    a name the workspace uses elsewhere is judged as before.
+    """
+    out: set[str] = set()
+    for launched, name, value in _unseen_settings(graph):
+        controller, _, key = name.rpartition(".")
+        if key != "type" or not controller or "." in controller or not isinstance(value, str) \
+                or not _PLUGIN_TYPE.fullmatch(value) or launched.is_unresolved("namespace"):
+            continue
+        if names.validate_node_name(controller).ok:
+            out.add((launched.namespace or "/").rstrip("/") + "/" + controller)
+    return frozenset(out)
+
+
+def unseen_parameter_names(graph: RosGraph) -> frozenset[str]:
+    """Absolute names a launch file hands as parameter values to a node whose code the analysis
+    does not see (robot_localization's ``imu1: /mag/heading_imu``, a bridge's ``ros_topic_name``):
+    that program names its ends by its parameters, so it may be the missing other end of
+    exactly that name. Relative values are left out: frame ids (``odom``, ``base_link``) are
+    relative too."""
+    return frozenset(value for _, _, value in _unseen_settings(graph)
+                     if isinstance(value, str) and value.startswith("/") and len(value) > 1
+                     and names.validate_full_topic_name(value).ok)
 
 
 def unseen_code_names(graph: RosGraph) -> frozenset[str]:
