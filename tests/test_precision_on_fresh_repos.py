@@ -711,3 +711,96 @@ def test_names_a_readable_parameter_file_leaves_alone_keep_their_defaults(tmp_pa
     config = root / "rim/config/rim_sim.yaml"
     config.write_text(config.read_text().replace("rim_topic: /rim_delayed", "rim_topic: /rim_delyed"))
     assert [(code, path) for code, path, _, _ in findings(root, ["ROS003"])] == [("ROS003", "rim/rim/rim_node.py")]
+
+
+# -- ROS001 (power): a namespace slip between two launch files of one robot ---------------------------
+LOW_CMD = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Float32MultiArray
+
+
+    class MasterCmd(Node):
+        def __init__(self):
+            super().__init__('master_cmd')
+            self.create_subscription(Float32MultiArray, 'robot_low_cmd', self.on_cmd, 10)
+            self.servo = self.create_publisher(Float32MultiArray, 'low/servo_cmd', 10)
+
+        def on_cmd(self, msg):
+            self.servo.publish(msg)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(MasterCmd())
+"""
+
+TELEOP = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Float32MultiArray
+
+
+    class VrTeleop(Node):
+        def __init__(self):
+            super().__init__('vr_teleop')
+            self.cmd = self.create_publisher(Float32MultiArray, '{topic}', 10)
+            self.create_timer(0.02, self.send)
+
+        def send(self):
+            self.cmd.publish(Float32MultiArray())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(VrTeleop())
+"""
+
+ROBOT_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='{package}', executable='{executable}', namespace='{namespace}'),
+        ])
+"""
+
+
+def robot_workspace(root: Path, topic: str, teleop_namespace: str = "alfie") -> Path:
+    return write(root, {
+        "alfie_bringup/package.xml": PACKAGE_XML.format(name="alfie_bringup", build="ament_python"),
+        "alfie_bringup/setup.py": setup_py("alfie_bringup", "'master_cmd = alfie_bringup.master_cmd:main'"),
+        "alfie_bringup/alfie_bringup/__init__.py": "",
+        "alfie_bringup/alfie_bringup/master_cmd.py": LOW_CMD,
+        "alfie_bringup/launch/bringup.launch.py": ROBOT_LAUNCH.format(
+            package="alfie_bringup", executable="master_cmd", namespace="alfie"),
+        "alfie_vr/package.xml": PACKAGE_XML.format(name="alfie_vr", build="ament_python"),
+        "alfie_vr/setup.py": setup_py("alfie_vr", "'vr_teleop = alfie_vr.vr_teleop:main'"),
+        "alfie_vr/alfie_vr/__init__.py": "",
+        "alfie_vr/alfie_vr/vr_teleop.py": TELEOP.format(topic=topic),
+        "alfie_vr/launch/teleop.launch.py": ROBOT_LAUNCH.format(
+            package="alfie_vr", executable="vr_teleop", namespace=teleop_namespace),
+    })
+
+
+def test_a_teleop_writing_the_robot_namespace_out_is_a_slip(tmp_path: Path) -> None:
+    """alfiebot (seeded): the teleop, launched in ``/alfie`` by its own launch file, publishes
+    ``/robot_low_cmd``; the bring-up's ``robot_low_cmd`` lands in ``/alfie``. The two launch
+    files start one robot, so the near name counts across them."""
+    root = robot_workspace(tmp_path, "/robot_low_cmd")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS001", "ROS003"])] == [
+        ("ROS001", "alfie_vr/alfie_vr/vr_teleop.py"), ("ROS003", "alfie_bringup/alfie_bringup/master_cmd.py")]
+
+
+def test_a_teleop_writing_the_robot_namespace_in_is_wired(tmp_path: Path) -> None:
+    root = robot_workspace(tmp_path, "/alfie/robot_low_cmd")
+    assert findings(root, ["ROS001", "ROS003"]) == []
+
+
+def test_launch_files_of_two_namespaces_stay_interfaces(tmp_path: Path) -> None:
+    """Launched in another namespace, the teleop is another deployment: a namespace set by
+    launch is a choice, not a slip."""
+    root = robot_workspace(tmp_path, "/robot_low_cmd", teleop_namespace="operator")
+    assert findings(root, ["ROS001", "ROS003"]) == []

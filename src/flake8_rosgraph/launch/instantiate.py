@@ -422,3 +422,11 @@ class LaunchScopes:
         if not first and not second:
             return True
         return bool(first & second)
+
+    @staticmethod
+    def one_robot(a: RosNode, b: RosNode) -> bool:
+        """Whether launch files start both nodes in one namespace other than the root (the
+        robot's ``/alfie``): the bring-up and the teleop launch file of one robot, whose names
+        are meant to meet there even when each launch file runs on its own."""
+        return a.launch is not None and b.launch is not None and a.namespace is not None \
+            and a.namespace.strip("/") != "" and a.namespace == b.namespace

@@ -63,7 +63,10 @@ under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`
 
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
-of its own launch system.
+of its own launch system, and with the nodes another launch file starts in
+the same namespace other than the root (one robot's bring-up and teleop
+launch files, both in ``/alfie``: a teleop publishing ``/robotlowcmd`` where
+the bring-up's ``robotlowcmd`` lands in ``/alfie`` is a namespace slip).
 
 * or the end's message type is made for a tool outside the workspace
   (``visualization_msgs``: rviz draws the markers, and sends interactive markers'
@@ -201,10 +204,14 @@ class AbsenceRule(Rule):
         head = f"{NAME_NOUN[self.kind]} {named} has no {self.missing}"
         origin = origin_related(entity)
         near = near_misses.find(endpoint)
-        if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
+        def compared(peer: Endpoint) -> bool:
+            return scopes.together(endpoint.node, peer.node) or scopes.one_robot(endpoint.node, peer.node)
+
+        if near is not None and not compared(near.peer) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
-            # a name launch changed is compared only with the nodes the same launch file starts
-            near = near_misses.find(endpoint, accept=lambda peer: scopes.together(endpoint.node, peer.node))
+            # a name launch changed is compared only with the nodes the same launch file starts,
+            # or that a launch file starts in the same robot namespace
+            near = near_misses.find(endpoint, accept=compared)
         infrastructure = infrastructure_slip(endpoint) if near is None else None
         if slip_only and (near is None or not near.is_slip_of(endpoint)) and infrastructure is None:
             return
