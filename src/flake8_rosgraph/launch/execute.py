@@ -250,6 +250,8 @@ class Executor:
         elif isinstance(action, Unsupported):
             system.problems.append(_problem(
                 action.location, f"{action.what} is not followed: nodes it starts are not in the system"))
+            if action.starts_nodes:
+                system.unfollowed.append(action.location)
 
     def include(self, action: Include, scope: Scope, system: System, stack: tuple[str, ...]) -> None:
         try:

@@ -170,6 +170,9 @@ class System:
     instances: list[Instance] = field(default_factory=list)
     #: The sections of every parameter file its nodes are given (root-relative path → sections).
     parameter_files: dict[str, list[Section]] = field(default_factory=dict)
+    #: Where it runs actions that may start nodes the analysis cannot see (an ``OpaqueFunction``
+    #: it cannot follow): those nodes, with their names and remaps, are not in ``nodes``.
+    unfollowed: list[Location] = field(default_factory=list)
 
     @property
     def complete(self) -> bool:

@@ -20,6 +20,12 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   ``/scan``), but never makes another end reportable (:meth:`.EndpointIndex.wired_nodes`);
 * another alternative of the same creation site (``'a' if sim else 'b'``) is
   connected or excused: the site works in at least one configuration;
+* the node runs as written in code, and a launch file of its package runs an
+  action the analysis cannot follow that may start nodes (an ``OpaqueFunction``
+  building them from configuration), or starts an executable of its package
+  that the analysis cannot tie to code with remaps or a namespace: that launch
+  file may start it remapped (``("fix", "gps/fix")``) — unless the name is a
+  slip of the pen, as above;
 * the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
 
 **Interfaces.** Most dangling ends in real repositories are deliberate: the
@@ -103,16 +109,16 @@ dangling end, and the message then says how to declare an interface.
 from __future__ import annotations
 
 from collections import Counter
-from typing import ClassVar, Iterator
+from typing import Callable, ClassVar, Iterator
 
 from ..graph.model import PEER_KIND, Entity, RosGraph
 from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
-from .launch_context import (controller_namespaces, under_any, unseen_code_names, unseen_parameter_names,
-                             unseen_remap_targets)
-from .near_miss import NearMissFinder
+from .launch_context import (UnseenLaunches, controller_namespaces, under_any, unseen_code_names,
+                             unseen_parameter_names, unseen_remap_targets)
+from .near_miss import NearMiss, NearMissFinder
 from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
@@ -144,13 +150,17 @@ class AbsenceRule(Rule):
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return
-        near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
-        # An unknown name elsewhere may be this end's partner; hardly so for a slip of the pen.
-        slips = {id(ep) for ep in unconnected if index.unresolved_peer_may_match(ep)
+        near_misses = _NearNames(NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)}),
+                                 once("unseen launches", graph, lambda: UnseenLaunches.of(graph)))
+        # An unknown name elsewhere may be this end's partner, and a launch file the analysis
+        # cannot follow may remap the end itself; hardly so for a slip of the pen.
+        def unknown_may_fill(ep: Endpoint) -> bool:
+            return index.unresolved_peer_may_match(ep) or near_misses.remapped_unseen(ep)
+
+        slips = {id(ep) for ep in unconnected if unknown_may_fill(ep)
                  and ((near := near_misses.find(ep)) is not None and near.is_slip_of(ep)
                       or infrastructure_slip(ep) is not None)}
-        dangling = [ep for ep in unconnected
-                    if id(ep) in slips or not index.unresolved_peer_may_match(ep)]
+        dangling = [ep for ep in unconnected if id(ep) in slips or not unknown_may_fill(ep)]
         dangling = self._whole_sites_only(dangling, index)
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
@@ -195,7 +205,7 @@ class AbsenceRule(Rule):
         dangling_at = Counter(site(ep) for ep in dangling)
         return [ep for ep in dangling if dangling_at[site(ep)] == alternatives[site(ep)]]
 
-    def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
+    def _report(self, endpoint: Endpoint, near_misses: _NearNames, interface: bool,
                 scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
         """``slip_only``: an unknown name may be the partner, so only a slip is worth saying."""
         entity = endpoint.entity
@@ -229,6 +239,27 @@ class AbsenceRule(Rule):
         elif self.report_interfaces:
             message = f"{head} in the workspace; if something outside uses it, add it to --rosgraph-external-topics"
             yield Finding(entity.location, self.code, message, origin)
+
+
+class _NearNames:
+    """:class:`NearMissFinder` for the absence rules: a partner that a launch file the analysis
+    cannot follow may start remapped (:class:`.launch_context.UnseenLaunches`) is a near
+    name only for a slip of the pen — its ``old/gripper/command`` may well be remapped onto
+    the ``/gripper/command`` it is one namespace token away from."""
+
+    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches) -> None:
+        self.finder = finder
+        self.unseen = unseen
+
+    def remapped_unseen(self, endpoint: Endpoint) -> bool:
+        return self.unseen.may_rename(endpoint.node)
+
+    def find(self, endpoint: Endpoint, accept: Callable[[Endpoint], bool] | None = None) -> NearMiss | None:
+        near = self.finder.find(endpoint, accept)
+        if near is None or near.is_slip_of(endpoint) or not self.remapped_unseen(near.peer):
+            return near
+        return self.finder.find(endpoint, lambda peer: (accept is None or accept(peer))
+                                and not self.remapped_unseen(peer))
 
 
 def _mostly_dangling(connected: list[Endpoint], unexplained: list[Endpoint]) -> frozenset[int]:

@@ -9,6 +9,7 @@ at the root.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from typing import Any, Iterator
 
 from ..graph import names
@@ -153,6 +154,47 @@ def unseen_code_names(graph: RosGraph) -> frozenset[str]:
                 if remapped is not None:
                     out.add(remapped)
     return frozenset(out)
+
+
+@dataclass(frozen=True)
+class UnseenLaunches:
+    """Where launch files may start a package's nodes renamed in ways the analysis cannot see.
+
+    ``folders``: the package folders (``kalman_slam/``) of launch files that run actions the
+    analysis cannot follow and that may start nodes (an ``OpaqueFunction`` building its nodes
+    from configuration) — a launch file starts its own package's nodes. ``packages``: packages a
+    launch file starts an executable of, not tied to code, with remaps or a namespace (or with
+    remaps or a namespace the analysis cannot read): that may be any node of the package.
+    """
+
+    folders: frozenset[str]
+    packages: frozenset[str]
+
+    @classmethod
+    def of(cls, graph: RosGraph) -> "UnseenLaunches":
+        folders = {_package_folder(location.path) for system in graph.systems for location in system.unfollowed}
+        packages = {launched.package for system in graph.systems for launched in system.nodes
+                    if launched.package and _unmatched(launched.target) and _renames(launched)}
+        return cls(frozenset(folders), frozenset(packages))
+
+    def may_rename(self, node: RosNode) -> bool:
+        """Whether ``node``, judged as written in code, may be started renamed by such a launch file."""
+        return node.launch is None and (
+            any(folder and node.location.path.startswith(folder) for folder in self.folders)
+            or in_package(node, self.packages))
+
+
+def _renames(launched: LaunchedNode) -> bool:
+    return bool(launched.remaps) or launched.is_unresolved("remappings") \
+        or launched.is_unresolved("namespace") or bool((launched.namespace or "/").strip("/"))
+
+
+def _package_folder(launch_path: str) -> str:
+    """``pkg/`` for ``pkg/launch/x.launch.py`` (the folder above ``launch/``), else the file's folder."""
+    parts = launch_path.split("/")[:-1]
+    if "launch" in parts:
+        parts = parts[:len(parts) - 1 - parts[::-1].index("launch")]
+    return "/".join(parts) + "/" if parts else ""
 
 
 def under_any(name: str | None, roots: frozenset[str]) -> bool:
