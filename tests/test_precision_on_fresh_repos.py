@@ -927,3 +927,105 @@ def test_ends_an_opaque_function_may_start_remapped_are_not_dangling(tmp_path: P
     determine: the launch file may start any node of its package, remapped."""
     root = slam_workspace(tmp_path, "fix", HELPER_SLAM_LAUNCH)
     assert findings(root, ["ROS001", "ROS003"]) == []
+
+
+# -- ROS001 (power): a name a launch file makes unknown fills only gaps near it ------------------------
+CMD_RELAY = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import Twist
+
+
+    class CmdRelay(Node):
+        def __init__(self):
+            super().__init__('cmd_relay')
+            self.declare_parameter('input_topic', 'cmd_vel_in')
+            self.out = self.create_publisher(Twist, 'cmd_vel_out', 10)
+            self.create_subscription(Twist, self.get_parameter('input_topic').value, self.out.publish, 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(CmdRelay())
+"""
+
+RELAY_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            DeclareLaunchArgument('input'),
+            Node(package='relay', executable='cmd_relay',
+                 parameters=[{'input_topic': LaunchConfiguration('input')}]),
+        ])
+"""
+
+ARM_DRIVER = """
+    import rclpy
+    from rclpy.node import Node
+    from geometry_msgs.msg import Twist
+    from std_msgs.msg import String
+
+
+    class ArmDriver(Node):
+        def __init__(self):
+            super().__init__('arm_driver')
+            self.state = self.create_publisher(String, '/arm/state', 10)
+            self.velocity = self.create_publisher(Twist, '/arm_controler/commands', 10)
+            self.create_subscription(String, '/arm/goal', self.on_goal, 10)
+
+        def on_goal(self, msg):
+            self.state.publish(msg)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ArmDriver())
+"""
+
+ARM_GOALS = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+
+    def main():
+        rclpy.init()
+        node = Node('arm_goals')
+        goal = node.create_publisher(String, '/arm/goal', 10)
+        node.create_subscription(String, '/arm/state', lambda msg: goal.publish(msg), 10)
+        rclpy.spin(node)
+"""
+
+
+def relay_workspace(root: Path, driver_package: str) -> Path:
+    """``driver_package``: where the arm driver lives (``arm``: another package than the relay's)."""
+    return write(root, {
+        "relay/package.xml": PACKAGE_XML.format(name="relay", build="ament_python"),
+        "relay/setup.py": setup_py("relay", "'cmd_relay = relay.cmd_relay:main'"),
+        "relay/relay/__init__.py": "",
+        "relay/relay/cmd_relay.py": CMD_RELAY,
+        "relay/launch/relay.launch.py": RELAY_LAUNCH,
+        f"{driver_package}/package.xml": PACKAGE_XML.format(name=driver_package, build="ament_python"),
+        f"{driver_package}/{driver_package}/__init__.py": "",
+        f"{driver_package}/{driver_package}/arm_driver.py": ARM_DRIVER,
+        f"{driver_package}/{driver_package}/arm_goals.py": ARM_GOALS,
+    })
+
+
+def test_a_launch_argument_naming_one_input_does_not_excuse_another_package(tmp_path: Path) -> None:
+    """adl-ros2 (seeded): a relay's input, named by a launch argument, could be any Twist
+    topic; it excused the misspelt controller command of an arm driver in another package."""
+    root = relay_workspace(tmp_path, "arm")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS001"])] == [
+        ("ROS001", "arm/arm/arm_driver.py")]
+
+
+def test_a_launch_argument_naming_an_input_may_fill_a_gap_of_its_package(tmp_path: Path) -> None:
+    """The twin: in the relay's own package the unknown input may be the driver's output."""
+    root = relay_workspace(tmp_path, "relay")
+    assert findings(root, ["ROS001"]) == []

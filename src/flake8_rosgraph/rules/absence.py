@@ -13,7 +13,9 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   elsewhere hardly happens to be exactly the misspelt name. An end whose type is
   unknown too (a test harness or recorder whose topics come from a plan at run
   time) could be any topic at all: it fills only gaps of its own package or launch
-  file (:func:`.topics.near`), never the whole workspace's;
+  file (:func:`.topics.near`), never the whole workspace's; so does an end whose
+  name a launch file makes unknown (a launch argument, a parameter file the
+  analysis cannot read): that is one configuration of one launch system;
 * the end's name is known only partly (``param if launched else '/scan'``): its
   site's unknown alternative may be connected. A partly known end does count as
   the present other end of its name (``/scan`` above satisfies a subscriber of
