@@ -1029,3 +1029,84 @@ def test_a_launch_argument_naming_an_input_may_fill_a_gap_of_its_package(tmp_pat
     """The twin: in the relay's own package the unknown input may be the driver's output."""
     root = relay_workspace(tmp_path, "relay")
     assert findings(root, ["ROS001"]) == []
+
+
+# -- ROS205 (power): an include of an installed package's launch file handed other values -------------
+MOTOR_DRIVER = """
+    import rclpy
+    from rclpy.node import Node
+
+
+    class MotorDriver(Node):
+        def __init__(self):
+            super().__init__('motor_driver')
+            self.declare_parameter('i2c_bus', 1)
+            self.declare_parameter('wheel_separation', 0.15)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(MotorDriver())
+"""
+
+MOTOR_YAML = """
+    {section}:
+      ros__parameters:
+        i2c_bus: 5
+        wheel_separation: 0.154
+"""
+
+TRACTOR_LAUNCH = """
+    import os
+
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch.actions import IncludeLaunchDescription
+    from launch.launch_description_sources import PythonLaunchDescriptionSource
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        config = os.path.join(get_package_share_directory('tractor'), 'config', 'motor.yaml')
+        camera = IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(os.path.join(
+                get_package_share_directory('realsense2_camera'), 'launch', 'rs_launch.py')),
+            launch_arguments={{'enable_gyro': 'true', '{camera_argument}': {camera_value}}}.items())
+        return LaunchDescription([
+            camera,
+            Node(package='tractor', executable='motor_driver', name='motor_driver', parameters=[config]),
+        ])
+"""
+
+
+def tractor_workspace(root: Path, section: str, camera_argument: str = "depth_profile",
+                      camera_value: str = "'848x100x100'") -> Path:
+    return write(root, {
+        "tractor/package.xml": PACKAGE_XML.format(name="tractor", build="ament_python"),
+        "tractor/setup.py": setup_py("tractor", "'motor_driver = tractor.motor_driver:main'"),
+        "tractor/tractor/__init__.py": "",
+        "tractor/tractor/motor_driver.py": MOTOR_DRIVER,
+        "tractor/config/motor.yaml": MOTOR_YAML.format(section=section),
+        "tractor/launch/tractor.launch.py": TRACTOR_LAUNCH.format(
+            camera_argument=camera_argument, camera_value=camera_value),
+    })
+
+
+def test_a_misspelt_section_beside_a_camera_include_is_reported(tmp_path: Path) -> None:
+    """ros2-rover (seeded): every bring-up includes realsense2_camera's launch file, which the
+    analysis does not follow; the include is handed camera settings only, so it cannot start a
+    node with the motor file, and the misspelt section matches no node."""
+    root = tractor_workspace(tmp_path, "motor_drive")
+    assert [(code, path) for code, path, _, _ in findings(root, ["ROS205"])] == [
+        ("ROS205", "tractor/config/motor.yaml")]
+
+
+def test_a_correct_section_beside_a_camera_include_is_quiet(tmp_path: Path) -> None:
+    root = tractor_workspace(tmp_path, "motor_driver")
+    assert findings(root, ["ROS205"]) == []
+
+
+def test_a_file_handed_to_an_include_not_followed_is_not_judged(tmp_path: Path) -> None:
+    """The twin: the include is handed the file itself; its nodes may read any section."""
+    root = tractor_workspace(tmp_path, "motor_drive", "config_file", "config")
+    assert findings(root, ["ROS205"]) == []
