@@ -14,7 +14,7 @@ from typing import Any, Iterator
 
 from ..graph import names
 from ..graph.model import RosGraph, RosNode
-from ..launch.model import LaunchedNode
+from ..launch.model import LaunchedNode, System
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
 _UNMATCHED = ("unknown", "missing-executable")
@@ -51,16 +51,20 @@ def unseen_remap_targets(graph: RosGraph) -> frozenset[str]:
     unknown namespace is left out: its full name is not known.
     """
     out: set[str] = set()
+    for _, launched in _unseen_launched(graph):
+        for remap in launched.remaps:
+            name = _landing(remap.target, launched.namespace)
+            if name is not None:
+                out.add(name)
+    return frozenset(out)
+
+
+def _unseen_launched(graph: RosGraph) -> Iterator[tuple[System, LaunchedNode]]:
+    """Every launched node whose code the analysis does not see (an installed package's
+    executable, a C++ one read in part), with its system."""
     for system in graph.systems:
         analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
-        for launched in system.nodes:
-            if id(launched) in analysed:
-                continue
-            for remap in launched.remaps:
-                name = _landing(remap.target, launched.namespace)
-                if name is not None:
-                    out.add(name)
-    return frozenset(out)
+        yield from ((system, launched) for launched in system.nodes if id(launched) not in analysed)
 
 
 def _landing(target: str, namespace: str | None) -> str | None:
@@ -83,20 +87,16 @@ def _unseen_settings(graph: RosGraph) -> Iterator[tuple[LaunchedNode, str, Any]]
     code the analysis does not see (an installed package's executable, a C++ one read in part):
     inline, and in the sections of its parameter files that may be meant for it (every section
     when its name is not known)."""
-    for system in graph.systems:
-        analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
-        for launched in system.nodes:
-            if id(launched) in analysed:
-                continue
-            for param in launched.params:
-                yield launched, param.name, param.value
-            fqn = None if launched.name is None or launched.unresolved \
-                else names.fqn(launched.name, launched.namespace or "/")
-            for file in launched.param_files:
-                for section in system.parameter_files.get(file.path or "", []):
-                    if fqn is None or section.matches(fqn):
-                        for name, value, _ in section.settings:
-                            yield launched, name, value
+    for system, launched in _unseen_launched(graph):
+        for param in launched.params:
+            yield launched, param.name, param.value
+        fqn = None if launched.name is None or launched.unresolved \
+            else names.fqn(launched.name, launched.namespace or "/")
+        for file in launched.param_files:
+            for section in system.parameter_files.get(file.path or "", []):
+                if fqn is None or section.matches(fqn):
+                    for name, value, _ in section.settings:
+                        yield launched, name, value
 
 
 def controller_namespaces(graph: RosGraph) -> frozenset[str]:
