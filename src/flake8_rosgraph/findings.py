@@ -5,6 +5,7 @@ read back from the cache) imports neither the rules nor the analyser.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -39,8 +40,11 @@ def display_path(path: Path) -> str:
 
 def localised_message(root: Path, finding: Finding) -> str:
     """The message with the other ends' workspace-relative ``path:line`` made relative to the current folder."""
-    text = finding.message
-    for location, _ in finding.related:
-        text = text.replace(f"{location.path}:{location.line}",
-                            f"{display_path(root / location.path)}:{location.line}")
-    return text
+    shown = {f"{location.path}:{location.line}": f"{display_path(root / location.path)}:{location.line}"
+             for location, _ in finding.related}
+    if not shown:
+        return finding.message
+    # One pass over the text: two ends at one line are rewritten once, and ``x.py:13`` is not
+    # rewritten inside ``x.py:136`` or inside a path that was already rewritten.
+    pattern = "|".join(re.escape(key) for key in sorted(shown, key=len, reverse=True))
+    return re.sub(rf"(?<![\w./-])(?:{pattern})(?!\d)", lambda m: shown[m.group(0)], finding.message)

@@ -61,10 +61,29 @@ def _class_names(value: Value) -> tuple[str, ...] | None:
     return tuple(names) if names and not value.is_top and len(names) == len(value.atoms) else None
 
 
+def ros1_paths(analysis: Analysis) -> frozenset[str]:
+    """The files of modules written for ROS 1: they import ``rospy`` and not ``rclpy``.
+
+    A package built for both ROS versions (fkie's multi-agent suite: catkin's Python for ROS 1,
+    C++ for ROS 2) keeps its rospy modules in the ROS 2 workspace. Their messages are genpy's,
+    which take positional arguments and ints for ``byte`` and float fields: the ROS 2 message
+    rules would misjudge every one of them.
+    """
+    def imports(module_name: str, top: str) -> bool:
+        return any(name == top or name.startswith(top + ".")
+                   for name in analysis.program.imports.get(module_name, ()))
+
+    return frozenset(module.path for name, module in analysis.program.modules.items()
+                     if imports(name, "rospy") and not imports(name, "rclpy"))
+
+
 def message_facts(analysis: Analysis) -> MessageFacts:
     facts = MessageFacts([], [], [], [], [])
+    ros1 = ros1_paths(analysis)
     # Every task's latest effects; the facts are deduplicated and sorted below.
     for eff in {eff for effects in analysis.effects.values() for eff in effects.values()}:
+        if eff.path in ros1:
+            continue
         if eff.kind == CONSTRUCT:
             message = (eff.arg("class").strings() or [""])[0]
             facts.constructions.append(Construction(_location(eff), message,

@@ -150,6 +150,9 @@ class Unsupported:
 
     location: Location
     what: str
+    #: Whether it may start nodes the system then lacks (an ``OpaqueFunction`` may; a
+    #: ``SetParameter`` of an unknown name may not).
+    starts_nodes: bool = True
 
 
 Action = Union[NodeAction, GroupAction, PushNamespace, SetRemap, SetParameter, DeclareArgument,

@@ -57,7 +57,7 @@ def systems_for(root: Path, graph: RosGraph, python: PythonLaunches | None,
 
 def _failed(path: str, exc: Exception) -> System:
     """A system that could not be read: no nodes, one problem naming the failure."""
-    system = System(path, files=[path])
+    system = System(path, files=[path], blind=True)
     system.problems.append(Diagnostic(path, 1, f"launch file not analysed: internal error: "
                                                f"{type(exc).__name__}: {exc}"[:300]))
     return system

@@ -126,6 +126,7 @@ class Executor:
         actions, problem = self.read(path)
         if problem:
             system.problems.append(Diagnostic(path, 1, f"launch file not read: {problem}"))
+            system.blind = True
         self.declare(actions, scope)
         self.run(actions, scope, system, stack + (path,))
 
@@ -250,25 +251,38 @@ class Executor:
         elif isinstance(action, Unsupported):
             system.problems.append(_problem(
                 action.location, f"{action.what} is not followed: nodes it starts are not in the system"))
+            if action.starts_nodes:
+                system.unfollowed.append(action.location)
+
+    def _handed(self, action: Include, scope: Scope) -> tuple[str | None, ...] | None:
+        """The argument values an include the analysis does not follow is handed (``None`` for
+        one it cannot read; ``None`` for all when the arguments themselves cannot be read)."""
+        if action.arguments is None:
+            return None
+        return tuple(self.value_or_none(value, scope) for _, value in action.arguments)
 
     def include(self, action: Include, scope: Scope, system: System, stack: tuple[str, ...]) -> None:
         try:
             written = self.value(action.path, scope)
         except Unresolved as exc:
             system.problems.append(_problem(action.location, f"include not resolved: {exc}"))
+            system.unseen_includes.append(self._handed(action, scope))
             return
         path = self.locate(written)
         if path is None:
             system.problems.append(_problem(
                 action.location, f"include not resolved: '{written}' is not a file in the workspace"))
+            system.unseen_includes.append(self._handed(action, scope))
             return
         if path in stack or len(stack) >= MAX_INCLUDE_DEPTH:
             system.problems.append(_problem(action.location, f"include of '{path}' is recursive"))
+            system.blind = True
             return
         if self._files_left <= 0:
             system.problems.append(_problem(
                 action.location, f"include of '{path}' not followed: the system already runs "
                                  f"{MAX_INCLUDED_FILES} launch files (include budget)"))
+            system.blind = True
             return
         self._files_left -= 1
         inner = scope.child(file=path, conditional=scope.conditional or action.condition is not None,

@@ -166,13 +166,15 @@ class Instantiator:
         fqn = None if name is None or namespace is None else names.fqn(name, namespace)
         settings = self.settings(launched, fqn)
         values = _set_values(settings)
+        unread = next((file.location for file in launched.param_files
+                       if file.path is None or isinstance(self.sections(file.path), str)), None)
         hits: set[int] = set()
         expanded: set[str] = set()
         entities: list[Entity] = []
         known = True
         foreign = set(launched.target.foreign_end_sites)
         own = [entity for entity in code.entities if entity.location not in foreign]
-        for entity in _named_by_parameters(own, values):
+        for entity in _named_by_parameters(own, values, unread):
             if entity.kind not in NAMED_KINDS:
                 entities.append(entity)
                 continue
@@ -251,16 +253,29 @@ def _set_values(settings: list[tuple[str, Any, Location, str]]) -> dict[str, tup
     return out
 
 
-def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Location]]) -> list[Entity]:
+def _named_by_parameters(entities: list[Entity], values: dict[str, tuple[Any, Location]],
+                         unread: Location | None = None) -> list[Entity]:
     """The entities as the launch's parameter values name them: an entity whose name is built
     from parameters the launch sets takes the values set, and the defaults in code of the
     parts it does not set (unknown when a value is no single string, or a part it does not
     set has no known default).  The alternatives of a partly known default collapse into
-    the one entity the values name."""
+    the one entity the values name.
+
+    ``unread``: where the launch hands the node a parameter file the analysis cannot read (not
+    in the workspace, a name it cannot resolve): that file may set any parameter, so a name
+    built from parameters the readable settings leave alone is unknown, not its default."""
     out: list[Entity] = []
     seen: set[tuple] = set()
     for entity in entities:
         set_here = [p for p in entity.name_parameters if p in values]
+        if not set_here and unread is not None and entity.name_parameters:
+            renamed = replace(entity, name=None, raw_name=None, invalid=None, name_suffix=None,
+                              partial=False, name_set_at=unread)
+            key = (renamed.kind, renamed.location, renamed.type, None)
+            if key not in seen:
+                seen.add(key)
+                out.append(renamed)
+            continue
         if not set_here:
             out.append(entity)
             continue
@@ -288,7 +303,8 @@ def _unread_names(node: RosNode) -> list[Diagnostic]:
                 entity.name_set_at.path, entity.name_set_at.line,
                 f"parameter {which} of node '{node.fqn or node.name or '?'}' names the entity at "
                 f"{entity.location.short()}, but its value here is not known statically (a launch "
-                "argument, settings that disagree, or a part without a default): the name is unknown",
+                "argument, settings that disagree, a part without a default, or a parameter file "
+                "the analysis cannot read): the name is unknown",
                 "info"))
     return out
 
@@ -406,3 +422,11 @@ class LaunchScopes:
         if not first and not second:
             return True
         return bool(first & second)
+
+    @staticmethod
+    def one_robot(a: RosNode, b: RosNode) -> bool:
+        """Whether launch files start both nodes in one namespace other than the root (the
+        robot's ``/alfie``): the bring-up and the teleop launch file of one robot, whose names
+        are meant to meet there even when each launch file runs on its own."""
+        return a.launch is not None and b.launch is not None and a.namespace is not None \
+            and a.namespace.strip("/") != "" and a.namespace == b.namespace

@@ -8,6 +8,7 @@ guess, because a guessed namespace would invent connections.
 """
 from __future__ import annotations
 
+import posixpath
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -170,6 +171,25 @@ class System:
     instances: list[Instance] = field(default_factory=list)
     #: The sections of every parameter file its nodes are given (root-relative path → sections).
     parameter_files: dict[str, list[Section]] = field(default_factory=dict)
+    #: Where it runs actions that may start nodes the analysis cannot see (an ``OpaqueFunction``
+    #: it cannot follow): those nodes, with their names and remaps, are not in ``nodes``.
+    unfollowed: list[Location] = field(default_factory=list)
+    #: The argument values handed to each include it does not follow (an installed package's
+    #: launch file): ``None`` for a value it cannot read, or for the whole list when the
+    #: arguments cannot be read. A parameter file reaches that launch file's nodes only so.
+    unseen_includes: list[tuple[str | None, ...] | None] = field(default_factory=list)
+    #: Some launch file of it was not read or followed at all (unreadable, recursive, over the
+    #: include budget): what it starts, with which files, is not known.
+    blind: bool = False
+
+    def may_hand_unseen(self, path: str) -> bool:
+        """Whether this system may hand the parameter file ``path`` to nodes the analysis does not
+        see: an action it does not follow that may start nodes, or an include it does not follow
+        handed an argument that names the file or cannot be read."""
+        name = posixpath.basename(path)
+        return self.blind or bool(self.unfollowed) or any(
+            handed is None or any(value is None or name in value for value in handed)
+            for handed in self.unseen_includes)
 
     @property
     def complete(self) -> bool:

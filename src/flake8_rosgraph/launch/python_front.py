@@ -189,11 +189,11 @@ class PythonFront:
         if short == "SetParameter":
             name = self.field(obj, "name").strings()
             return [SetParameter(at, name[0], self.param_value(self.field(obj, "value")))
-                    if name and len(name) == 1 else Unsupported(at, "SetParameter with an unknown name")]
+                    if name and len(name) == 1 else Unsupported(at, "SetParameter with an unknown name", starts_nodes=False)]
         if short in ("DeclareLaunchArgument", "SetLaunchConfiguration"):
             names = self.field(obj, "name").strings()
             if not names or len(names) != 1:
-                return [Unsupported(at, f"{short} with an unknown name")]
+                return [Unsupported(at, f"{short} with an unknown name", starts_nodes=False)]
             if short == "SetLaunchConfiguration":
                 return [SetConfiguration(at, names[0], self.subst(self.field(obj, "value")))]
             default = self.field(obj, "default_value")

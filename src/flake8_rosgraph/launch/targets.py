@@ -26,7 +26,7 @@ import ast
 from collections import deque
 from typing import Mapping, Sequence
 
-from ..absint.engine import Analysis
+from ..absint.engine import Analysis, Effect
 from ..absint.values import ClassAtom, Obj
 from ..graph.builder import _class_name
 from ..graph.model import Location
@@ -89,6 +89,7 @@ class EntryReach:
         self.callees: dict[tuple, set[tuple]] = {}
         self._walks: dict[Executable, tuple | None] = {}
         self._guarded: dict[str, frozenset[int]] = {}
+        self._guarded_lines: dict[str, tuple[tuple[int, int], ...]] = {}
         for key, readers in analysis.readers.items():
             callee = key[1] if key[0] == "ret" else ("mod", key[1], ()) if key[0] == "g" else None
             if callee is None:
@@ -150,17 +151,34 @@ class EntryReach:
         return {task for task in self.analysis.effects if task[0] == "fn" and task[1] in fids}
 
     def _main_guarded(self, task: tuple) -> frozenset[int]:
-        """The top-level functions of ``task``'s module that its top level calls only under
-        ``if __name__ == '__main__':`` — not run when another module imports it (a helper
-        imported from another node's script does not start that script's node)."""
+        """The top-level functions of ``task``'s module, and the methods of its top-level
+        classes, that its top level calls only under ``if __name__ == '__main__':`` — not run
+        when another module imports it (a helper imported from another node's script does not
+        start that script's node, whether its guard calls ``main()`` or ``CarouselNode()``)."""
         known = self._guarded.get(task[1])
         if known is None:
             module = self.analysis.program.modules.get(task[1])
             names = _main_guard_calls(module.tree) if module is not None else frozenset()
             known = self._guarded[task[1]] = frozenset(
                 f.fid for f in self.analysis.program.functions
-                if f.module is module and f.parent is None and f.cls is None and f.qualname in names)
+                if f.module is module and f.parent is None
+                and (f.qualname if f.cls is None else f.qualname.split(".", 1)[0]) in names)
         return known
+
+    def _runs_only_as_main(self, task: tuple, eff: Effect) -> bool:
+        """Whether ``eff`` of module task ``task`` stands in the body of its module's
+        ``if __name__ == '__main__':`` — code a module imported by another one never runs
+        (a script's ``node = Node('carousel')`` there starts no node in the script that
+        imports its helpers)."""
+        if task[0] != "mod":
+            return False
+        module = self.analysis.program.modules.get(task[1])
+        if module is None or eff.path != module.path:
+            return False
+        spans = self._guarded_lines.get(task[1])
+        if spans is None:
+            spans = self._guarded_lines[task[1]] = _main_guard_spans(module.tree)
+        return any(first <= eff.line <= last for first, last in spans)
 
     def node_sites(self, starts: list[tuple]) -> tuple[list[Location], list[Location],
                                                       list[tuple[Location, str | None]], frozenset[Location]]:
@@ -187,7 +205,10 @@ class EntryReach:
                 queue.extend(sorted(methods, key=repr))
                 continue
             task = queue.popleft()
+            imported = task not in started
             for eff in self.analysis.effects.get(task, {}).values():
+                if imported and self._runs_only_as_main(task, eff):
+                    continue
                 if eff.kind != "node":
                     if entry_reached:
                         ends.add(Location(eff.path, eff.line, eff.column))
@@ -232,6 +253,12 @@ def _called_names(nodes: list[ast.stmt]) -> set[str]:
             found.add(cur.func.id)
         todo.extend(ast.iter_child_nodes(cur))
     return found
+
+
+def _main_guard_spans(tree: ast.Module) -> tuple[tuple[int, int], ...]:
+    """The first and last lines of the body of each top-level ``__main__`` guard."""
+    return tuple((stmt.body[0].lineno, stmt.body[-1].end_lineno or stmt.body[-1].lineno)
+                 for stmt in tree.body if isinstance(stmt, ast.If) and _is_main_guard(stmt.test))
 
 
 def _main_guard_calls(tree: ast.Module) -> frozenset[str]:

@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Iterable
 
 from ..cpp.reporting import at_python_ends
-from ..graph.model import RosGraph
+from ..graph.model import Location, RosGraph
 from .base import Finding, Rule, RuleConfig
 from .ros001_publisher_without_subscriber import PublisherWithoutSubscriber
 from .ros002_self_loop import SelfLoop
@@ -88,7 +88,22 @@ def run_rules(graph: RosGraph, config: RuleConfig, select: Iterable[str] | None 
     with shared_indexes():
         for rule in selected_rules(select):
             findings.update(rule.check(graph, config))
-    return at_python_ends(findings)  # C++ ends are partners only
+    return merge_same_text(at_python_ends(findings))  # C++ ends are partners only
+
+
+def merge_same_text(findings: Iterable[Finding]) -> list[Finding]:
+    """One finding per location, code and message, with the related locations of all of them.
+
+    Two findings a user reads as one line are one problem told twice: a callback that two
+    timers run reaches the same ``time.sleep()`` twice, a helper sleeps at two lines behind one
+    call — each path has its own related locations, but the line printed is the same.
+    """
+    related: dict[tuple, dict[tuple[Location, str], None]] = {}
+    for finding in sorted(findings):
+        related.setdefault((finding.location, finding.code, finding.message), {}).update(
+            dict.fromkeys(finding.related))
+    return [Finding(location, code, message, tuple(others))
+            for (location, code, message), others in sorted(related.items(), key=lambda kv: kv[0])]
 
 
 __all__ = ["RULES", "Finding", "Rule", "RuleConfig", "rule_by_code", "run_rules", "selected_rules"]

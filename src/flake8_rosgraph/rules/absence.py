@@ -13,13 +13,21 @@ fixtures only fill gaps of the package they test: :mod:`.fixtures`):
   elsewhere hardly happens to be exactly the misspelt name. An end whose type is
   unknown too (a test harness or recorder whose topics come from a plan at run
   time) could be any topic at all: it fills only gaps of its own package or launch
-  file (:func:`.topics.near`), never the whole workspace's;
+  file (:func:`.topics.near`), never the whole workspace's; so does an end whose
+  name a launch file makes unknown (a launch argument, a parameter file the
+  analysis cannot read): that is one configuration of one launch system;
 * the end's name is known only partly (``param if launched else '/scan'``): its
   site's unknown alternative may be connected. A partly known end does count as
   the present other end of its name (``/scan`` above satisfies a subscriber of
   ``/scan``), but never makes another end reportable (:meth:`.EndpointIndex.wired_nodes`);
 * another alternative of the same creation site (``'a' if sim else 'b'``) is
   connected or excused: the site works in at least one configuration;
+* the node runs as written in code, and a launch file of its package runs an
+  action the analysis cannot follow that may start nodes (an ``OpaqueFunction``
+  building them from configuration), or starts an executable of its package
+  that the analysis cannot tie to code with remaps or a namespace: that launch
+  file may start it remapped (``("fix", "gps/fix")``) — unless the name is a
+  slip of the pen, as above;
 * the rule's own ``invalid`` entities: rclpy raises before they exist (ROS006).
 
 **Interfaces.** Most dangling ends in real repositories are deliberate: the
@@ -47,6 +55,13 @@ outside the workspace by nature: see :mod:`.infrastructure`), when
   executable, a C++ executable it cannot tie to code): that program's own
   relative names land there.
 
+A ros2_control controller a controller manager's parameters configure
+(``arm_controller.type: joint_trajectory_controller/JointTrajectoryController``)
+is such a program too: the names under ``/arm_controller/`` are its ends. And an
+absolute name a launch file hands such a node as a parameter value
+(robot_localization's ``imu1: /mag/heading_imu``) may be its end: that name
+(only that one) is not dangling either.
+
 A name a launch file remaps such a node of unseen code onto (``teleop_twist_joy``
 started with ``('/cmd_vel', '/cmd_vel_intuitive')``) is not dangling at all: the
 launch file says that program uses it, and it is the other end the analysis cannot see.
@@ -56,7 +71,10 @@ under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`
 
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
-of its own launch system.
+of its own launch system, and with the nodes another launch file starts in
+the same namespace other than the root (one robot's bring-up and teleop
+launch files, both in ``/alfie``: a teleop publishing ``/robotlowcmd`` where
+the bring-up's ``robotlowcmd`` lands in ``/alfie`` is a namespace slip).
 
 * or the end's message type is made for a tool outside the workspace
   (``visualization_msgs``: rviz draws the markers, and sends interactive markers'
@@ -93,15 +111,16 @@ dangling end, and the message then says how to declare an interface.
 from __future__ import annotations
 
 from collections import Counter
-from typing import ClassVar, Iterator
+from typing import Callable, ClassVar, Iterator
 
 from ..graph.model import PEER_KIND, Entity, RosGraph
 from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
-from .launch_context import under_any, unseen_code_names, unseen_remap_targets
-from .near_miss import NearMissFinder
+from .launch_context import (UnseenLaunches, controller_namespaces, under_any, unseen_code_names,
+                             unseen_parameter_names, unseen_remap_targets)
+from .near_miss import NearMiss, NearMissFinder
 from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
@@ -122,22 +141,28 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph))
+        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph)
+                      | controller_namespaces(graph))
+        configured = once("unseen parameter names", graph, lambda: unseen_parameter_names(graph))
         peer_kind = PEER_KIND[self.kind]
         scopes = once("launch scopes", graph, lambda: LaunchScopes(graph.systems))
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                       and not under_any(ep.entity.name, unseen)
+                       and not under_any(ep.entity.name, unseen) and ep.entity.name not in configured
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return
-        near_misses = NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)})
-        # An unknown name elsewhere may be this end's partner; hardly so for a slip of the pen.
-        slips = {id(ep) for ep in unconnected if index.unresolved_peer_may_match(ep)
+        near_misses = _NearNames(NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)}),
+                                 once("unseen launches", graph, lambda: UnseenLaunches.of(graph)))
+        # An unknown name elsewhere may be this end's partner, and a launch file the analysis
+        # cannot follow may remap the end itself; hardly so for a slip of the pen.
+        def unknown_may_fill(ep: Endpoint) -> bool:
+            return index.unresolved_peer_may_match(ep) or near_misses.remapped_unseen(ep)
+
+        slips = {id(ep) for ep in unconnected if unknown_may_fill(ep)
                  and ((near := near_misses.find(ep)) is not None and near.is_slip_of(ep)
                       or infrastructure_slip(ep) is not None)}
-        dangling = [ep for ep in unconnected
-                    if id(ep) in slips or not index.unresolved_peer_may_match(ep)]
+        dangling = [ep for ep in unconnected if id(ep) in slips or not unknown_may_fill(ep)]
         dangling = self._whole_sites_only(dangling, index)
         wired = index.wired_nodes(self.kind, exempt)
         one_way = index.one_way_namespaces(self.kind)
@@ -182,7 +207,7 @@ class AbsenceRule(Rule):
         dangling_at = Counter(site(ep) for ep in dangling)
         return [ep for ep in dangling if dangling_at[site(ep)] == alternatives[site(ep)]]
 
-    def _report(self, endpoint: Endpoint, near_misses: NearMissFinder, interface: bool,
+    def _report(self, endpoint: Endpoint, near_misses: _NearNames, interface: bool,
                 scopes: LaunchScopes, slip_only: bool) -> Iterator[Finding]:
         """``slip_only``: an unknown name may be the partner, so only a slip is worth saying."""
         entity = endpoint.entity
@@ -191,10 +216,14 @@ class AbsenceRule(Rule):
         head = f"{NAME_NOUN[self.kind]} {named} has no {self.missing}"
         origin = origin_related(entity)
         near = near_misses.find(endpoint)
-        if near is not None and not scopes.together(endpoint.node, near.peer.node) and (
+        def compared(peer: Endpoint) -> bool:
+            return scopes.together(endpoint.node, peer.node) or scopes.one_robot(endpoint.node, peer.node)
+
+        if near is not None and not compared(near.peer) and (
                 scopes.renamed(endpoint.node, entity) or scopes.renamed(near.peer.node, near.peer.entity)):
-            # a name launch changed is compared only with the nodes the same launch file starts
-            near = near_misses.find(endpoint, accept=lambda peer: scopes.together(endpoint.node, peer.node))
+            # a name launch changed is compared only with the nodes the same launch file starts,
+            # or that a launch file starts in the same robot namespace
+            near = near_misses.find(endpoint, accept=compared)
         infrastructure = infrastructure_slip(endpoint) if near is None else None
         if slip_only and (near is None or not near.is_slip_of(endpoint)) and infrastructure is None:
             return
@@ -212,6 +241,27 @@ class AbsenceRule(Rule):
         elif self.report_interfaces:
             message = f"{head} in the workspace; if something outside uses it, add it to --rosgraph-external-topics"
             yield Finding(entity.location, self.code, message, origin)
+
+
+class _NearNames:
+    """:class:`NearMissFinder` for the absence rules: a partner that a launch file the analysis
+    cannot follow may start remapped (:class:`.launch_context.UnseenLaunches`) is a near
+    name only for a slip of the pen — its ``old/gripper/command`` may well be remapped onto
+    the ``/gripper/command`` it is one namespace token away from."""
+
+    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches) -> None:
+        self.finder = finder
+        self.unseen = unseen
+
+    def remapped_unseen(self, endpoint: Endpoint) -> bool:
+        return self.unseen.may_rename(endpoint.node)
+
+    def find(self, endpoint: Endpoint, accept: Callable[[Endpoint], bool] | None = None) -> NearMiss | None:
+        near = self.finder.find(endpoint, accept)
+        if near is None or near.is_slip_of(endpoint) or not self.remapped_unseen(near.peer):
+            return near
+        return self.finder.find(endpoint, lambda peer: (accept is None or accept(peer))
+                                and not self.remapped_unseen(peer))
 
 
 def _mostly_dangling(connected: list[Endpoint], unexplained: list[Endpoint]) -> frozenset[int]:

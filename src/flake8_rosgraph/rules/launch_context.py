@@ -8,8 +8,13 @@ at the root.
 """
 from __future__ import annotations
 
+import re
+from dataclasses import dataclass
+from typing import Any, Iterator
+
 from ..graph import names
 from ..graph.model import RosGraph, RosNode
+from ..launch.model import LaunchedNode, System
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
 _UNMATCHED = ("unknown", "missing-executable")
@@ -46,16 +51,20 @@ def unseen_remap_targets(graph: RosGraph) -> frozenset[str]:
     unknown namespace is left out: its full name is not known.
     """
     out: set[str] = set()
+    for _, launched in _unseen_launched(graph):
+        for remap in launched.remaps:
+            name = _landing(remap.target, launched.namespace)
+            if name is not None:
+                out.add(name)
+    return frozenset(out)
+
+
+def _unseen_launched(graph: RosGraph) -> Iterator[tuple[System, LaunchedNode]]:
+    """Every launched node whose code the analysis does not see (an installed package's
+    executable, a C++ one read in part), with its system."""
     for system in graph.systems:
         analysed = {id(instance.launched) for instance in system.instances if instance.analysed}
-        for launched in system.nodes:
-            if id(launched) in analysed:
-                continue
-            for remap in launched.remaps:
-                name = _landing(remap.target, launched.namespace)
-                if name is not None:
-                    out.add(name)
-    return frozenset(out)
+        yield from ((system, launched) for launched in system.nodes if id(launched) not in analysed)
 
 
 def _landing(target: str, namespace: str | None) -> str | None:
@@ -67,6 +76,59 @@ def _landing(target: str, namespace: str | None) -> str | None:
     if namespace is None:
         return None
     return namespace.rstrip("/") + "/" + target
+
+
+#: A ros2_control controller's ``type``: ``package/Class`` (``joint_trajectory_controller/JointTrajectoryController``).
+_PLUGIN_TYPE = re.compile(r"[A-Za-z_]\w*/[A-Za-z_]\w*")
+
+
+def _unseen_settings(graph: RosGraph) -> Iterator[tuple[LaunchedNode, str, Any]]:
+    """``(launched node, parameter, value)`` for every value a launch file hands a node whose
+    code the analysis does not see (an installed package's executable, a C++ one read in part):
+    inline, and in the sections of its parameter files that may be meant for it (every section
+    when its name is not known)."""
+    for system, launched in _unseen_launched(graph):
+        for param in launched.params:
+            yield launched, param.name, param.value
+        fqn = None if launched.name is None or launched.unresolved \
+            else names.fqn(launched.name, launched.namespace or "/")
+        for file in launched.param_files:
+            for section in system.parameter_files.get(file.path or "", []):
+                if fqn is None or section.matches(fqn):
+                    for name, value, _ in section.settings:
+                        yield launched, name, value
+
+
+def controller_namespaces(graph: RosGraph) -> frozenset[str]:
+    """Where the ros2_control controllers the workspace configures have their names.
+
+    A controller manager (``ros2_control_node``, installed) given ``<controller>.type:
+    package/Class`` loads that controller as a node ``<controller>`` in its own namespace, and
+    the controller's topics, services and actions (``/arm_controller/joint_trajectory``,
+    ``/franka_robot_state_broadcaster/robot_state``) live under that node: a C++ plugin outside
+    the workspace is their other end. Only names under a configured controller's name count:
+    a name the workspace uses elsewhere is judged as before.
+    """
+    out: set[str] = set()
+    for launched, name, value in _unseen_settings(graph):
+        controller, _, key = name.rpartition(".")
+        if key != "type" or not controller or "." in controller or not isinstance(value, str) \
+                or not _PLUGIN_TYPE.fullmatch(value) or launched.is_unresolved("namespace"):
+            continue
+        if names.validate_node_name(controller).ok:
+            out.add((launched.namespace or "/").rstrip("/") + "/" + controller)
+    return frozenset(out)
+
+
+def unseen_parameter_names(graph: RosGraph) -> frozenset[str]:
+    """Absolute names a launch file hands as parameter values to a node whose code the analysis
+    does not see (robot_localization's ``imu1: /mag/heading_imu``, a bridge's ``ros_topic_name``):
+    that program names its ends by its parameters, so it may be the missing other end of
+    exactly that name. Relative values are left out: frame ids (``odom``, ``base_link``) are
+    relative too."""
+    return frozenset(value for _, _, value in _unseen_settings(graph)
+                     if isinstance(value, str) and value.startswith("/") and len(value) > 1
+                     and names.validate_full_topic_name(value).ok)
 
 
 def unseen_code_names(graph: RosGraph) -> frozenset[str]:
@@ -92,6 +154,47 @@ def unseen_code_names(graph: RosGraph) -> frozenset[str]:
                 if remapped is not None:
                     out.add(remapped)
     return frozenset(out)
+
+
+@dataclass(frozen=True)
+class UnseenLaunches:
+    """Where launch files may start a package's nodes renamed in ways the analysis cannot see.
+
+    ``folders``: the package folders (``kalman_slam/``) of launch files that run actions the
+    analysis cannot follow and that may start nodes (an ``OpaqueFunction`` building its nodes
+    from configuration) — a launch file starts its own package's nodes. ``packages``: packages a
+    launch file starts an executable of, not tied to code, with remaps or a namespace (or with
+    remaps or a namespace the analysis cannot read): that may be any node of the package.
+    """
+
+    folders: frozenset[str]
+    packages: frozenset[str]
+
+    @classmethod
+    def of(cls, graph: RosGraph) -> "UnseenLaunches":
+        folders = {_package_folder(location.path) for system in graph.systems for location in system.unfollowed}
+        packages = {launched.package for system in graph.systems for launched in system.nodes
+                    if launched.package and _unmatched(launched.target) and _renames(launched)}
+        return cls(frozenset(folders), frozenset(packages))
+
+    def may_rename(self, node: RosNode) -> bool:
+        """Whether ``node``, judged as written in code, may be started renamed by such a launch file."""
+        return node.launch is None and (
+            any(folder and node.location.path.startswith(folder) for folder in self.folders)
+            or in_package(node, self.packages))
+
+
+def _renames(launched: LaunchedNode) -> bool:
+    return bool(launched.remaps) or launched.is_unresolved("remappings") \
+        or launched.is_unresolved("namespace") or bool((launched.namespace or "/").strip("/"))
+
+
+def _package_folder(launch_path: str) -> str:
+    """``pkg/`` for ``pkg/launch/x.launch.py`` (the folder above ``launch/``), else the file's folder."""
+    parts = launch_path.split("/")[:-1]
+    if "launch" in parts:
+        parts = parts[:len(parts) - 1 - parts[::-1].index("launch")]
+    return "/".join(parts) + "/" if parts else ""
 
 
 def under_any(name: str | None, roots: frozenset[str]) -> bool:

@@ -44,7 +44,8 @@ class PublisherWithoutSubscriber(AbsenceRule):
     reported with it as near name (a namespace more or less is no slip). It also stays quiet when
     some subscription's topic name could not be resolved and its type and
     known end (a relative name on a node of unknown namespace ends in
-    `/<name>`) do not rule the match out — but not for a slip of the pen
+    `/<name>`) do not rule the match out (a name a launch file makes unknown,
+    such as a launch argument, only in its own package or launch file) — but not for a slip of the pen
     (spelling, case, plural, resolution) of a fully known subscribed name
     of the same type — and when another alternative of the same
     creation site (`'a' if sim else 'b'`) on the same node is connected

@@ -29,7 +29,7 @@ class SelfLoop(Rule):
     monitoring, or a relay that republishes). Exempt names are not reported:
     a node that broadcasts transforms and also listens to `/tf` through a tf2
     `TransformListener` is normal. The rule compares resolved names only; an unresolved name never
-    makes a loop, nor does a name known only partly (`param if launched else '/scan'`). A node that launch files start in a namespace (one per robot)
+    makes a loop, nor does one rclpy rejects (ROS006: that end never exists), nor a name known only partly (`param if launched else '/scan'`). A node that launch files start in a namespace (one per robot)
     and that publishes and subscribes an absolute name is not reported: the
     absolute name is a bus its instances share on purpose (a swarm's votes),
     and each instance hears the others. A node class instantiated by several executables that each
@@ -84,10 +84,10 @@ class SelfLoop(Rule):
             published: dict[str, list[Entity]] = defaultdict(list)
             for pub in node.of_kind("publishers"):
                 # a partly known name (``param if launched else '/scan'``) is no evidence of a loop
-                if pub.name is not None and pub.name not in exempt and not pub.partial:
+                if pub.name is not None and pub.name not in exempt and not pub.partial and pub.invalid is None:
                     published[pub.name].append(pub)
             for sub in node.of_kind("subscriptions"):
-                if sub.name not in published or sub.partial:
+                if sub.name not in published or sub.partial or sub.invalid is not None:
                     continue
                 if instances and _absolute(sub) and all(_absolute(p) for p in published[sub.name]):
                     continue  # one bus shared by the instances in their namespaces: each hears the others

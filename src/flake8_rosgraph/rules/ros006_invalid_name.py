@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Iterator
 
 from ..graph import names
-from ..graph.model import RosGraph, RosNode
+from ..graph.model import Entity, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .launch_context import in_package, packages_maybe_namespaced
 from .vocabulary import NAME_NOUN
@@ -22,6 +22,15 @@ def _where_root(node: RosNode) -> str:
     if node.launch is not None:
         return f" as {node.launch.get('file')} starts it"
     return " when nothing sets one"
+
+
+def disabled_when_empty(entity: Entity) -> bool:
+    """Whether the name is a parameter that defaults to the empty string, on an end the code
+    creates only under a condition: the idiom "empty = disabled" (``if self.track_topic:
+    self.create_subscription(…, self.track_topic, …)``). The analysis does not narrow the
+    parameter's value by the condition, so the empty default reaching the call says nothing."""
+    return entity.conditional and entity.name == "" and bool(entity.name_template) \
+        and all(parameter and default == "" for parameter, default in entity.name_template)
 
 
 class InvalidName(Rule):
@@ -56,7 +65,11 @@ class InvalidName(Rule):
     node started that way in a namespace is still judged at the root. Under a
     launch file's namespace, only a name that starts with the root's `//`
     is rebuilt in that namespace; a namespace the launch file computes in a
-    way the analysis cannot follow makes such names unknown (not checked). When
+    way the analysis cannot follow makes such names unknown (not checked). An
+    empty name taken from a parameter that defaults to `''`, on an end created
+    under a condition, is the idiom "empty = disabled" (`if topic: create_…`)
+    and is not reported: the analysis does not narrow the value by the
+    condition. When
     a launch file starts an executable of the node's package that the analysis
     cannot match to code (built from a launch argument) in a namespace, the node
     may be that one: its namespace-built names are not judged at the root then.
@@ -91,7 +104,7 @@ class InvalidName(Rule):
             if node.invalid:
                 yield Finding(node.location, self.code, f"rcl rejects node '{_node_label(node)}': {node.invalid}")
             for entity in node.entities:
-                if entity.invalid:
+                if entity.invalid and not disabled_when_empty(entity):
                     shown = entity.raw_name if entity.raw_name is not None else entity.name
                     message = f"rcl rejects {NAME_NOUN[entity.kind]} name '{shown}': {entity.invalid}"
                     if names.built_at_root(entity.raw_name, node.namespace):

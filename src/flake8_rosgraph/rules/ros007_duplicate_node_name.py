@@ -51,7 +51,12 @@ class DuplicateNodeName(Rule):
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
     creation site (`Node('a' if x else 'b')`) and nodes created by one call
-    inside a loop are one site and are not reported.
+    inside a loop are one site and are not reported. One node's code started
+    under one name by two launch files that do not start each other's
+    instance (two bring-ups of one safety monitor, one remapping its output
+    onto what the other's input reads) is two deployments: their talk does
+    not make them run together. An end whose name rclpy rejects (ROS006)
+    never exists, so it ties no two nodes together.
 
     ## Example
     ```python
@@ -205,11 +210,21 @@ class _Together:
         for node in nodes:
             scope = node_scope(node)
             for entity in node.entities:
-                if entity.name is None or entity.kind not in PEER_KIND or entity.name in SHARED_BUSES:
+                if entity.name is None or entity.kind not in PEER_KIND or entity.name in SHARED_BUSES \
+                        or entity.invalid is not None:  # rclpy raises before such an end exists
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
-                    if id(peer.node) in members and peer.node is not node:
+                    if id(peer.node) in members and peer.node is not node \
+                            and not self._configurations_of_one_node(node, peer.node):
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
+
+    def _configurations_of_one_node(self, a: RosNode, b: RosNode) -> bool:
+        """Whether ``a`` and ``b`` are one node's code as launch files that do not start each
+        other's instance configure it (a safety monitor whose output one bring-up remaps onto
+        what another bring-up's instance reads): each is a deployment of its own, and one
+        launch file starting both is reported above."""
+        return a.location == b.location and a.launch is not None and b.launch is not None \
+            and not set(self._systems.get(id(a), ())) & set(self._systems.get(id(b), ()))
 
 
 def _chained(reason: str, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:

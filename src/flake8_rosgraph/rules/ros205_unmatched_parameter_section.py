@@ -43,15 +43,14 @@ def _uses(systems: list[System]) -> dict[str, _FileUse]:
     uses: dict[str, _FileUse] = {}
     unresolved: list[str] = []
     for system in systems:
-        # An include or OpaqueFunction not followed, or a parameter file not resolved, may hand
-        # a file this system passes to nodes the analysis does not see.
-        incomplete = bool(system.problems)
         for launched in system.nodes:
-            fqns = None if incomplete else _fqns(system, launched)
             for ref in launched.param_files:
                 if ref.path is None:
                     unresolved.append(ref.written)
                     continue
+                # An OpaqueFunction not followed, or an include not followed that is handed the
+                # file (or values the analysis cannot read), may pass it to nodes it does not see.
+                fqns = None if system.may_hand_unseen(ref.path) else _fqns(system, launched)
                 use = uses.setdefault(ref.path, _FileUse())
                 use.sections = system.parameter_files.get(ref.path, use.sections)
                 use.references.add(ref.location)
@@ -86,10 +85,12 @@ class UnmatchedParameterSection(Rule):
     file starts each node. It stays quiet when a node started with the file
     has a name or namespace the analysis cannot determine (from a launch
     argument without a default, or a C++ executable whose name the launch
-    file does not set), and for files passed by a launch file that is not
-    followed completely (an include or `OpaqueFunction` it cannot follow,
-    a parameter file it cannot resolve such as `RewrittenYaml`): unseen
-    nodes may receive the file there. Only parameter
+    file does not set), and for files passed by a launch file that may hand
+    them to nodes it does not see (an `OpaqueFunction` it cannot follow, an
+    include it cannot follow that is handed the file or values it cannot
+    read, a parameter file it cannot resolve such as `RewrittenYaml`). An
+    include of an installed package's launch file (a camera driver's) that
+    is handed other values does not make the file unknown. Only parameter
     files that some launch file passes are judged. The finding is located
     in the YAML file, so flake8 (which sees only `.py` files) does not show
     it; use `flake8-rosgraph check` or SARIF.

@@ -79,6 +79,11 @@ class EndpointIndex:
     #: (a test harness or recorder whose topics come from a plan at run time) could be any
     #: topic, so it fills only gaps near it (:func:`near`), never the whole workspace's.
     untyped_unresolved: dict[str, tuple[tuple["str | None", RosNode], ...]] = field(default_factory=dict)
+    #: Production ends whose name a launch file makes unknown (a parameter it sets to a launch
+    #: argument, a parameter file it hands that the analysis cannot read), by kind: ``(message
+    #: type, name suffix, node)``. The unknown is one configuration of one launch system, so it
+    #: fills only gaps near it (:func:`near`), never the whole workspace's.
+    launch_unresolved: dict[str, tuple[tuple["str | None", "str | None", RosNode], ...]] = field(default_factory=dict)
     #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
     _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
 
@@ -93,6 +98,7 @@ class EndpointIndex:
         unresolved_types: dict[str, set[Unresolved]] = defaultdict(set)
         unresolved_production: dict[str, set[Unresolved]] = defaultdict(set)
         untyped: dict[str, list[tuple[str | None, RosNode]]] = defaultdict(list)
+        by_launch: dict[str, list[tuple[str | None, str | None, RosNode]]] = defaultdict(list)
         scopes: dict[int, str | None] = {}
         for node, entity in graph.entities():
             if entity.kind not in NAMED_KINDS:
@@ -104,6 +110,8 @@ class EndpointIndex:
                 unresolved_types[entity.kind].add((entity.type, entity.name_suffix))
                 if scope is None and entity.type is None:
                     untyped[entity.kind].append((entity.name_suffix, node))
+                elif scope is None and entity.name_set_at is not None:
+                    by_launch[entity.kind].append((entity.type, entity.name_suffix, node))
                 elif scope is None:
                     unresolved_production[entity.kind].add((entity.type, entity.name_suffix))
             else:
@@ -111,7 +119,8 @@ class EndpointIndex:
         for endpoints in by_name.values():
             endpoints.sort(key=lambda ep: ep.sort_key)
         return cls(dict(by_name), _frozen(unresolved_types), _frozen(unresolved_production),
-                   {kind: tuple(ends) for kind, ends in untyped.items()})
+                   {kind: tuple(ends) for kind, ends in untyped.items()},
+                   {kind: tuple(ends) for kind, ends in by_launch.items()})
 
     def endpoints(self, kind: str) -> list[Endpoint]:
         """All resolved endpoints of one kind, in source order."""
@@ -171,7 +180,11 @@ class EndpointIndex:
                    for peer_type, suffix in unresolved.get(peer_kind, ())) or (
             endpoint.scope is None and any(
                 (suffix is None or own_name.endswith(suffix)) and near(node, endpoint.node)
-                for suffix, node in self.untyped_unresolved.get(peer_kind, ())))
+                for suffix, node in self.untyped_unresolved.get(peer_kind, ()))) or (
+            endpoint.scope is None and any(
+                (own_type is None or peer_type is None or peer_type == own_type)
+                and (suffix is None or own_name.endswith(suffix)) and near(node, endpoint.node)
+                for peer_type, suffix, node in self.launch_unresolved.get(peer_kind, ())))
 
     def wired_nodes(self, kind: str, exempt: ExemptNames) -> frozenset[int]:
         """``id()`` of every node with an endpoint of ``kind`` that reaches *another* node through a non-exempt name.
