@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, SATURATED, TOP,
                                            ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom, Input,
-                                           ModuleAtom, Obj, Seq, Value, atoms, from_input, join_all,
+                                           ModuleAtom, Obj, Record, Seq, Value, atoms, from_input, join_all,
                                            soften)
 
 LAWS = settings(max_examples=300, deadline=None, database=None,
@@ -84,6 +84,8 @@ def _depth(atom) -> int:
         return 1 + _value_depth(atom.elem)
     if isinstance(atom, DictAtom):
         return 1 + max((max(_value_depth(k), _value_depth(v)) for k, v in atom.items), default=0)
+    if isinstance(atom, Record):
+        return 1 + max((_value_depth(v) for _, v in atom.fields), default=0)
     return 0
 
 
@@ -226,6 +228,21 @@ def test_values_never_exceed_the_bounds(items: list) -> None:
         assert _value_depth(value) <= MAX_DEPTH
     hinted = TOP.join(value)
     assert hinted.is_saturated or len(hinted.hints) <= MAX_ATOMS
+
+
+def test_a_record_nests_no_deeper_than_a_container() -> None:
+    """A record holding the value it replaces (``d = os.path.join(d, 'x')`` re-run) nests one
+    level per step: past :data:`MAX_DEPTH` what it holds is ⊤, so a growing cell settles within
+    a few steps (and its text stays small)."""
+    value, steps = atoms([Const("str", "recordings")]), 0
+    while True:
+        record = Record("os.path.join", (("paths", atoms([Seq("tuple", (TOP, value))])),))
+        grown = value.join(atoms([record]))
+        if grown == value:
+            break
+        value, steps = grown, steps + 1
+        assert steps <= MAX_DEPTH + 1  # the cell settles within the depth bound, not at 64 atoms
+    assert _value_depth(value) <= MAX_DEPTH
 
 
 @LAWS

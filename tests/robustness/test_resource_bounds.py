@@ -66,3 +66,39 @@ def test_small_file_small_memory(name: str, tmp_path: Path) -> None:
     peak = int(done.stderr.rsplit("peak-kib=", 1)[1].split()[0])
     assert peak < PEAK_LIMIT_KIB, f"{name}: peak memory {peak // 1024} MiB for a one-line file"
     assert GOOD_ENTITIES <= entity_keys(json.loads(done.stdout))
+
+
+#: A field rebuilt from its own value by a library call the stubs describe field by field (a
+#: record): each re-run of the callback nests the last value once more, and its text doubles.
+GROWING_RECORD = """
+import os
+
+import rclpy
+from rclpy.node import Node
+
+
+class Recorder(Node):
+    def __init__(self):
+        super().__init__('recorder')
+        self.base_dir = 'recordings'
+        self.base_dir = os.path.join(os.getcwd(), self.base_dir)
+        self.session_dir = None
+        self.create_timer(1.0, self.on_tick)
+
+    def on_tick(self):
+        self.base_dir = os.path.join(self.base_dir, 'next')
+        self.session_dir = os.path.join(self.base_dir, self.session_dir or 'first')
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="ru_maxrss is in KiB on Linux only")
+def test_a_field_rebuilt_from_itself_by_a_modelled_call_stays_small(tmp_path: Path) -> None:
+    root = tmp_path / "ws"
+    write_files(root, {**{k: v.encode() for k, v in GOOD_FILES.items()}, "recorder.py": GROWING_RECORD.encode()})
+    done = run([sys.executable, "-c", PEAK_PROBE, str(root)], tmp_path)
+    assert_clean_exit(done)
+    peak = int(done.stderr.rsplit("peak-kib=", 1)[1].split()[0])
+    assert peak < PEAK_LIMIT_KIB, f"peak memory {peak // 1024} MiB for a 20-line node"
+    graph = json.loads(done.stdout)
+    assert GOOD_ENTITIES <= entity_keys(graph)
+    assert "/recorder" in {node["fqn"] for node in graph["nodes"]}

@@ -200,6 +200,13 @@ class Record:
 
     qualname: str
     fields: tuple[tuple[str, "Value"], ...]
+    #: Bounded like a container's: a record built from the value it replaces
+    #: (``self.dir = os.path.join(root, self.dir)`` re-run as the field grows) nests one level
+    #: deeper each time, and its text doubles.
+    depth: int = field(init=False, compare=False, repr=False, default=0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "depth", 1 + max((v.depth for _, v in self.fields), default=0))
 
     def field(self, name: str) -> "Value | None":
         for key, val in self.fields:
@@ -382,7 +389,7 @@ class Value:
         return sorted(vals)
 
 
-_CONTAINERS = (Seq, Coll, DictAtom, Partial)
+_CONTAINERS = (Seq, Coll, DictAtom, Partial, Record)
 #: ⊤: anything; joined with constants it keeps them as hints.
 TOP = Value(None)
 #: ⊤ past the bounds: keeps nothing, absorbs every join.
