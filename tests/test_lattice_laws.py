@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from functools import reduce
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, SATURATED, TOP,
+from flake8_rosgraph.absint.values import (BOTTOM, MAX_ATOMS, MAX_DEPTH, MAX_OBJECTS, MAX_RECORD_NESTING,
+                                           SATURATED, TOP,
                                            ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom, Input,
                                            ModuleAtom, Obj, Record, Seq, Value, atoms, from_input, join_all,
                                            soften)
@@ -84,8 +86,8 @@ def _depth(atom) -> int:
         return 1 + _value_depth(atom.elem)
     if isinstance(atom, DictAtom):
         return 1 + max((max(_value_depth(k), _value_depth(v)) for k, v in atom.items), default=0)
-    if isinstance(atom, Record):
-        return 1 + max((_value_depth(v) for _, v in atom.fields), default=0)
+    if isinstance(atom, Record):  # no container level itself
+        return max((_value_depth(v) for _, v in atom.fields), default=0)
     return 0
 
 
@@ -230,19 +232,23 @@ def test_values_never_exceed_the_bounds(items: list) -> None:
     assert hinted.is_saturated or len(hinted.hints) <= MAX_ATOMS
 
 
-def test_a_record_nests_no_deeper_than_a_container() -> None:
-    """A record holding the value it replaces (``d = os.path.join(d, 'x')`` re-run) nests one
-    level per step: past :data:`MAX_DEPTH` what it holds is ⊤, so a growing cell settles within
-    a few steps (and its text stays small)."""
+@pytest.mark.parametrize("rebuild, bound", [
+    # ``d = os.path.join(root, d)``: a record holding a tuple holding the value it replaces
+    (lambda value: Record("os.path.join", (("paths", atoms([Seq("tuple", (TOP, value))])),)), MAX_DEPTH),
+    # ``p = Path(p)``: a record holding the value it replaces, directly
+    (lambda value: Record("pathlib.Path", (("parts", value),)), MAX_RECORD_NESTING),
+], ids=["through-a-container", "record-in-record"])
+def test_a_cell_rebuilt_from_itself_as_a_record_settles(rebuild, bound: int) -> None:
+    """A record built from the value it replaces (a callback re-run as its field grows) nests
+    one level per step, and its text doubles: the chain settles within the bound."""
     value, steps = atoms([Const("str", "recordings")]), 0
     while True:
-        record = Record("os.path.join", (("paths", atoms([Seq("tuple", (TOP, value))])),))
-        grown = value.join(atoms([record]))
+        grown = value.join(atoms([rebuild(value)]))
         if grown == value:
             break
         value, steps = grown, steps + 1
-        assert steps <= MAX_DEPTH + 1  # the cell settles within the depth bound, not at 64 atoms
-    assert _value_depth(value) <= MAX_DEPTH
+        assert steps <= bound + 1
+    assert len(repr(value)) < 10_000 and _value_depth(value) <= MAX_DEPTH
 
 
 @LAWS

@@ -43,6 +43,8 @@ MAX_ATOMS = 12
 MAX_OBJECTS = 64
 #: Bound on nesting of containers (a tuple in a list in a dict …) before ⊤.
 MAX_DEPTH = 4
+#: Bound on records directly inside records (see :attr:`Record.nesting`) before ⊤.
+MAX_RECORD_NESTING = 8
 
 ConstType = Union[str, int, float, bool, None, bytes, complex]
 
@@ -200,13 +202,19 @@ class Record:
 
     qualname: str
     fields: tuple[tuple[str, "Value"], ...]
-    #: Bounded like a container's: a record built from the value it replaces
-    #: (``self.dir = os.path.join(root, self.dir)`` re-run as the field grows) nests one level
-    #: deeper each time, and its text doubles.
+    #: The containers' nesting inside its fields (a record is no container level itself: a
+    #: launch description's include of a joined path is records in records).
     depth: int = field(init=False, compare=False, repr=False, default=0)
+    #: Records directly inside records, this one included: bounded by
+    #: :data:`MAX_RECORD_NESTING`, so that a record built from the value it replaces
+    #: (``self.dir = os.path.join(root, self.dir)`` re-run as the field grows), whose text
+    #: doubles with each level, stops growing.
+    nesting: int = field(init=False, compare=False, repr=False, default=1)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "depth", 1 + max((v.depth for _, v in self.fields), default=0))
+        object.__setattr__(self, "depth", max((v.depth for _, v in self.fields), default=0))
+        object.__setattr__(self, "nesting", 1 + max(
+            (a.nesting for _, v in self.fields if v.atoms for a in v.atoms if type(a) is Record), default=0))
 
     def field(self, name: str) -> "Value | None":
         for key, val in self.fields:
@@ -389,7 +397,7 @@ class Value:
         return sorted(vals)
 
 
-_CONTAINERS = (Seq, Coll, DictAtom, Partial, Record)
+_CONTAINERS = (Seq, Coll, DictAtom, Partial)
 #: ⊤: anything; joined with constants it keeps them as hints.
 TOP = Value(None)
 #: ⊤ past the bounds: keeps nothing, absorbs every join.
@@ -430,7 +438,7 @@ def atoms(items: Iterable[Atom], soft: bool = False) -> Value:
     """The value holding exactly ``items`` (saturated ⊤ past the bounds)."""
     items = frozenset(items)
     for a in items:
-        if type(a) in _CONTAINERS and a.depth > MAX_DEPTH:
+        if type(a) in _CONTAINERS and a.depth > MAX_DEPTH or type(a) is Record and a.nesting > MAX_RECORD_NESTING:
             return SATURATED
     return _bounded(items, soft)
 
