@@ -290,16 +290,24 @@ def test_an_edit_to_a_script_without_suffix_is_seen(root: Path) -> None:
     assert [(path, code) for path, _, code, _ in _report(root)] == [("nav/scripts/scan_logger", "ROS003")]
 
 
-def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypatch) -> None:
+def _files_read_after_misspelling_the_scan_topic(root: Path, monkeypatch) -> list[Path]:
+    """After a cold run, misspell the scan topic in ``nav/topics.py`` and report again (the
+    finding follows): the files read and parsed on the way, as the list the spy keeps filling."""
     import flake8_rosgraph.workspace as workspace_module
     _report(root)
-    read = []
+    read: list[Path] = []
     original = workspace_module.read_module
     monkeypatch.setattr(workspace_module, "read_module",
                         lambda path, *args, **kwargs: read.append(path) or original(path, *args, **kwargs))
     topics = root / "nav/nav/topics.py"
     topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
     assert [code for _, _, code, _ in _report(root)] == ["ROS003", "ROS001"]
+    return read
+
+
+def test_only_the_groups_analysed_again_are_read_and_parsed(root: Path, monkeypatch) -> None:
+    read = _files_read_after_misspelling_the_scan_topic(root, monkeypatch)
+    topics = root / "nav/nav/topics.py"
     # the edited module, and the one of its group the analysis reads (the empty __init__ it never needs)
     assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
 
@@ -314,18 +322,10 @@ def test_a_bare_import_of_a_workspace_file_name_parses_no_kept_module(tmp_path: 
     """``import monitor`` in a kept module names a workspace file without resolving to it (no
     ``sys.path`` edit there): whether the module edits ``sys.path`` comes from its outline, so
     an edit elsewhere still reads and parses the edited group only."""
-    import flake8_rosgraph.workspace as workspace_module
     probe = {"sensors/sensors/probe.py": "import rclpy\nimport monitor\n\n\ndef main():\n"
                                          "    rclpy.init()\n    monitor.main()\n"}
     root = write(tmp_path / "ws", {**SENSORS, **NAV, **BRINGUP, **probe})
-    _report(root)
-    read = []
-    original = workspace_module.read_module
-    monkeypatch.setattr(workspace_module, "read_module",
-                        lambda path, *args, **kwargs: read.append(path) or original(path, *args, **kwargs))
-    topics = root / "nav/nav/topics.py"
-    topics.write_text(topics.read_text().replace("SCAN_TOPIC = '/scan'", "SCAN_TOPIC = '/scna'"))
-    assert [code for _, _, code, _ in _report(root)] == ["ROS003", "ROS001"]
+    read = _files_read_after_misspelling_the_scan_topic(root, monkeypatch)
     assert sorted(p.relative_to(root).as_posix() for p in read) == ["nav/nav/monitor.py", "nav/nav/topics.py"]
 
 
