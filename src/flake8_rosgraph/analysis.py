@@ -15,6 +15,7 @@ join them.
 from __future__ import annotations
 
 import contextlib
+import functools
 import gc
 import json
 import pickle
@@ -207,12 +208,14 @@ class _Group:
                      if c.rpartition(".")[0] in program.modules}
         return cls(program, executables, framework)
 
+    @functools.cached_property
     def inputs(self) -> str:
         """What identifies the group's facts: its modules' names, paths and contents, and the rest."""
         return json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
                             for m in self.program.modules.values()],
                            sorted(self.framework.items()), [entry_key(exe) for exe in self.executables]])
 
+    @functools.cached_property
     def weight(self) -> int:
         """About how much analysing it costs: its lines (known once parsed, else one per module)."""
         return sum(m.parsed.body[-1].end_lineno or 1 if m.parsed is not None and m.parsed.body else 1
@@ -238,7 +241,7 @@ class _Group:
                           f"{type(exc).__name__}: {exc} (at {Path(where.filename).name}:{where.lineno})",
                 "error")])
         if memo is not None:
-            memo.write(self.inputs(), facts)
+            memo.write(self.inputs, facts)
         return facts
 
 
@@ -257,15 +260,15 @@ class _GroupsFacts:
     @classmethod
     def start(cls, groups: list[_Group], library: Callable[[], LibraryModel], memo: FactsMemo | None,
               kept: list[Analysis] | None) -> _GroupsFacts:
-        found = [memo.read(group.inputs()) if memo is not None else None for group in groups]
+        found = [memo.read(group.inputs) if memo is not None else None for group in groups]
         started = cls(groups, library, memo, kept, found)
         missing = [index for index, facts in enumerate(found) if facts is None]
         # --explain reads the analyses themselves: they run here
-        count = 1 if kept is not None else forked.useful([groups[index].weight() for index in missing])
+        count = 1 if kept is not None else forked.useful([groups[index].weight for index in missing])
         if count > 1:
             library()  # loaded before the fork, once for every child
             started.running = forked.ForkedJobs.start(
-                sorted(missing, key=lambda index: (-groups[index].weight(), index)), started._pickled, count)
+                sorted(missing, key=lambda index: (-groups[index].weight, index)), started._pickled, count)
         return started
 
     def _pickled(self, index: int) -> bytes | None:
