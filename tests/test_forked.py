@@ -152,12 +152,22 @@ def test_one_process_unless_the_run_allows_more_and_no_other_thread_runs() -> No
 
 def test_no_more_processes_than_can_shorten_the_run() -> None:
     with forked.processes(16):
-        assert forked.useful([5]) == 1  # one job: nothing to share
+        assert forked.useful([]) == 0
+        assert forked.useful([500]) == 0  # one job and nothing else to do: the caller runs it
         assert forked.useful([1] * 40) == forked.MAX_PROCESSES  # memory bounds the children
         assert forked.useful([60, 20, 20, 20]) == 2  # the heaviest job takes half the run anyway
         assert forked.useful([10, 10, 10]) == 3
     with forked.processes(2):
         assert forked.useful([10, 10, 10]) == 2
+    assert forked.useful([10, 10, 10]) == 0  # the run allowed one process
+
+
+def test_one_job_goes_to_a_child_only_when_the_caller_has_as_much_to_do_meanwhile() -> None:
+    with forked.processes(2):
+        assert forked.useful([500], meanwhile=600) == 1  # an edited group beside reading the kept ones
+        assert forked.useful([500], meanwhile=forked.MIN_OVERLAP - 1) == 0  # not worth a fork
+        assert forked.useful([forked.MIN_OVERLAP - 1], meanwhile=600) == 0  # a tiny group: the same
+    assert forked.useful([500], meanwhile=600) == 0
 
 
 def _graph_json(root: Path, processes: int) -> dict:
@@ -225,3 +235,34 @@ def test_children_keep_the_groups_they_analysed_for_the_next_run(workspace: Path
     for entry in (cache).glob("*.json"):
         entry.unlink()  # the workspace report: the next run must put it together from the groups
     assert check(cache, "2").stdout == first.stdout
+
+
+def test_an_edited_group_is_analysed_in_a_child_while_the_kept_groups_are_read(
+        workspace: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The pre-commit case: one group changed, the others kept. Its analysis overlaps with reading
+    the kept facts (the thresholds are lowered: the groups here are a few lines each)."""
+    from flake8_rosgraph.facts_cache import FactsStore
+
+    store = FactsStore(tmp_path / "groups", b"secret", "context")
+    store.folder.mkdir()
+    with forked.processes(1):
+        build_graph(workspace, facts_memo=store)  # every group kept
+    console = workspace / "src/console/console/console.py"
+    console.write_text(console.read_text().replace("'replann'", "'replan'"))
+    alone = _graph_json(workspace, 1)
+    started: list[tuple[list[int], int]] = []
+    real_start = forked.ForkedJobs.start
+
+    def spy(order, work, count):
+        started.append((list(order), count))
+        return real_start(order, work, count)
+
+    monkeypatch.setattr(forked.ForkedJobs, "start", spy)
+    monkeypatch.setattr(analysis, "KEPT_READ_RATIO", 1)
+    monkeypatch.setattr(forked, "MIN_OVERLAP", 1)
+    with forked.processes(2):
+        edited = graph_to_json_obj(build_graph(workspace, facts_memo=store))
+    assert [(len(order), count) for order, count in started] == [(1, 1)]  # the console's group, one child
+    assert edited == alone
+    console_node = next(node for node in edited["nodes"] if node["name"] == "console")
+    assert [client["name"] for client in console_node["clients"]] == ["/replan"]  # the edit shows

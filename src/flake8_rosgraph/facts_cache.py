@@ -80,6 +80,11 @@ class FactsStore:
                 os.utime(entry)  # recently used: kept by the pruning
         return kept
 
+    def holds(self, inputs: str) -> bool:
+        """Whether an entry is kept for the group with these ``inputs`` (not read: it may still
+        be corrupt or foreign, which :meth:`read` finds)."""
+        return (self.folder / f"{self._key(inputs)}.json").is_file()
+
     def write(self, inputs: str, facts: PythonFacts) -> None:
         """Keep the facts computed for the group with these ``inputs`` (safe from several
         processes at once: entries are written atomically)."""

@@ -36,6 +36,10 @@ _FRAME = struct.Struct("<IQ")
 #: copy-on-write view of the parent's memory.
 MAX_PROCESSES = 8
 
+#: Work (in the callers' unit: lines analysed) a single child must let the caller overlap with
+#: its job to pay for the fork: about what analysing this many lines costs.
+MIN_OVERLAP = 100
+
 _allowed = 1
 
 
@@ -60,14 +64,21 @@ def allowed() -> int:
     return _allowed
 
 
-def useful(weights: Sequence[int]) -> int:
-    """How many processes can shorten jobs of these ``weights`` (costs in any unit): within
-    :func:`allowed` and :data:`MAX_PROCESSES`, one per job at most, and no more than the total
-    weight over the heaviest job's (that job bounds the run, however many processes help)."""
-    if len(weights) < 2:
-        return 1
+def useful(weights: Sequence[int], meanwhile: int = 0) -> int:
+    """How many children can shorten jobs of these ``weights`` (costs in any unit) while the
+    caller does work of weight ``meanwhile`` itself; 0: none, the caller does the jobs after
+    its own. Within :func:`allowed` and :data:`MAX_PROCESSES`, one per job at most, and no more
+    than the total weight over the heaviest job's (that job bounds the run, however many
+    processes help). A single child pays only when the caller has work of its own to overlap
+    with it, worth more than a fork (:data:`MIN_OVERLAP`): a one-file edit's group analysed
+    while the caller reads every other group's kept facts."""
+    if not weights or allowed() < 2:
+        return 0
     balance = -(-sum(weights) // max(max(weights), 1))
-    return max(1, min(allowed(), len(weights), balance, MAX_PROCESSES))
+    count = min(allowed(), len(weights), balance, MAX_PROCESSES)
+    if count >= 2:
+        return count
+    return 1 if min(meanwhile, sum(weights)) >= MIN_OVERLAP else 0
 
 
 def cores() -> int:

@@ -264,15 +264,15 @@ def read_module(path: Path, root: Path, buffer: bytes | None = None,
     return Module(name, rel, tree, wide, is_package, program, digest=hashlib.sha256(data).hexdigest(),
                   imports=import_statements(tree), declares=declared_names(tree),
                   attribute_stores=attribute_stores(tree, b"setattr" in data),
-                  edits_sys_path=edits_sys_path(tree, b"sys.path" in data))
+                  edits_sys_path=edits_sys_path(tree, b"sys.path" in data), lines=text.count("\n") + 1)
 
 
 @dataclass
 class Outlines:
     """What earlier runs learnt of each Python file that parsed, by content digest: whether it
     is a program, its import statements, the names it declares, the attribute names it
-    assigns and whether it edits ``sys.path`` (``["ok", program, statements, declares, stores,
-    edits_path]``, as JSON; see :mod:`.absint.outline`).
+    assigns, whether it edits ``sys.path`` and its number of lines (``["ok", program, statements,
+    declares, stores, edits_path, lines]``, as JSON; see :mod:`.absint.outline`).
 
     With the digests the cache key computed (:class:`.cache.InputDigests`, by file identity), a
     file whose outline is known is made into a module without being read or parsed: only the
@@ -297,13 +297,13 @@ class Outlines:
         name, is_package = module_name(path, root if root.is_dir() else root.parent, package_memo)
         return Module(name, rel, None, {}, is_package, outline[1], digest=digest, imports=statements,
                       declares=None if outline[3] is None else tuple(outline[3]),
-                      attribute_stores=frozenset(outline[4]), edits_sys_path=outline[5],
+                      attribute_stores=frozenset(outline[4]), edits_sys_path=outline[5], lines=outline[6],
                       source=functools.partial(_parse_again, path, root))
 
     def learn(self, module: Module) -> None:
         self.used[module.digest] = ["ok", module.program, [list(s) for s in module.imports],
                                     None if module.declares is None else list(module.declares),
-                                    sorted(module.attribute_stores), module.edits_sys_path]
+                                    sorted(module.attribute_stores), module.edits_sys_path, module.lines]
 
 
 def _names(item: Any, allow_none: bool = False) -> bool:
@@ -315,8 +315,9 @@ def _names(item: Any, allow_none: bool = False) -> bool:
 
 def _statements(outline: Any) -> tuple | None:
     """The import statements of a well-formed outline, else ``None``."""
-    if not (isinstance(outline, list) and len(outline) == 6 and outline[0] == "ok"
-            and isinstance(outline[1], bool) and isinstance(outline[2], list) and isinstance(outline[5], bool)):
+    if not (isinstance(outline, list) and len(outline) == 7 and outline[0] == "ok"
+            and isinstance(outline[1], bool) and isinstance(outline[2], list) and isinstance(outline[5], bool)
+            and type(outline[6]) is int):
         return None
     out = []
     for item in outline[2]:

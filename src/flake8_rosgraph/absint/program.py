@@ -40,6 +40,8 @@ class Module:
     attribute_stores: frozenset[str] = frozenset()
     #: Whether it adds folders to ``sys.path`` (:func:`.outline.edits_sys_path`).
     edits_sys_path: bool = False
+    #: Its number of lines, known without the tree: what analysing it costs, roughly.
+    lines: int = 0
     #: Reads and parses the file, for a module made without its tree (its group's facts were
     #: expected from the cache): the tree and the wide lines.
     source: Callable[[], tuple[ast.Module, dict[int, str]]] | None = None

@@ -27,6 +27,7 @@ indices for ASCII names.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Mapping, Sequence
 
 #: ``RMW_TOPIC_MAX_NAME_LENGTH``: 255 minus 8 characters that rmw reserves for DDS prefixes.
@@ -37,6 +38,9 @@ NAMESPACE_MAX_LENGTH = TOPIC_MAX_NAME_LENGTH - 2
 NODE_NAME_MAX_LENGTH = 255
 #: A node name or name token starting with this is hidden by the ROS 2 CLI tools (rclpy ``HIDDEN_NODE_PREFIX``).
 HIDDEN_PREFIX = "_"
+#: Names whose checks are remembered: the rules check each name of the graph many times (once
+#: per endpoint, launch instance and candidate); the results are immutable.
+_REMEMBERED_CHECKS = 8192
 
 _DIGITS = frozenset("0123456789")
 _ALNUM = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz") | _DIGITS
@@ -68,6 +72,7 @@ def _unallowed(char: str, allowed: str, index: int) -> NameCheck:
     return _fail(f"contains {char!r} (only {allowed} are allowed)", index)
 
 
+@lru_cache(maxsize=_REMEMBERED_CHECKS)
 def validate_node_name(name: str) -> NameCheck:
     """Check a node name as ``rmw_validate_node_name`` does: ``[A-Za-z_][A-Za-z0-9_]*``, at most 255 characters."""
     if not name:
@@ -82,6 +87,7 @@ def validate_node_name(name: str) -> NameCheck:
     return VALID
 
 
+@lru_cache(maxsize=_REMEMBERED_CHECKS)
 def _validate_absolute(name: str, max_length: int) -> NameCheck:
     """The shared body of the full-topic-name and namespace checks; only the length limit differs."""
     if not name:
@@ -127,6 +133,7 @@ def validate_namespace(ns: str) -> NameCheck:
     return _validate_absolute(ns, NAMESPACE_MAX_LENGTH)
 
 
+@lru_cache(maxsize=_REMEMBERED_CHECKS)
 def validate_topic_name(name: str) -> NameCheck:
     """Check a topic/service/action name as written in code, before expansion (``rcl_validate_topic_name``).
 
