@@ -6,12 +6,12 @@ need the findings would analyse while every other worker waited on the cache loc
 for its first file: the analysis would sit on the critical path, alone on one core.
 
 Instead, during ``Manager.run_parallel`` the analysis runs beside the workers, while their
-checkers report nothing (:func:`deferred`). Where the cache can keep the report (as for
-``-j1`` below), a child forked before the pool starts analyses, using every core
-(:mod:`.forked`: groups of modules in processes of their own), and leaves the report in the
-cache; otherwise the main process analyses in a thread it starts right after the pool has
-started its workers (so no worker inherits a half-done analysis or a held lock). Once the
-pool is done, the main process adds each file's ROS results to the results the workers sent
+checkers report nothing (:func:`deferred`). Where the run may fork (as for ``-j1`` below), a
+child forked before the pool starts analyses, using every core (:mod:`.forked`: groups of
+modules in processes of their own), and hands each file's results back (it also leaves the
+report in the cache); otherwise the main process analyses in a thread it starts right after the
+pool has started its workers (so no worker inherits a half-done analysis or a held lock). Once
+the pool is done, the main process adds each file's ROS results to the results the workers sent
 back — the same code, line, column and text the checker would have yielded, with the
 ``noqa`` line flake8's file processor gives — before flake8 filters and reports them as usual.
 
@@ -25,14 +25,14 @@ Works with the fork, spawn and forkserver start methods (spawned workers learn o
 the run from :data:`DEFER_ENV`, which only a pool worker heeds) and with flake8 4.0.1
 (``Manager.checkers``) to 7.x (``Manager.filenames`` / ``Manager.results``).
 
-With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the run
-checks :data:`MIN_FILES_BESIDE` files or more, the machine has a second core and the cache can
-keep the report, a forked child process analyses meanwhile (with the cores flake8 leaves it)
-and leaves the report in the cache; the checkers report nothing, and once flake8 is done the
-main process reads the report and adds each file's results the same way.
-A cold or edited run then costs about the longer of the two instead of their sum. When the
-child could not leave a report (it died, or failed), the main process analyses itself: the
-results never depend on the child.
+With ``-j1`` (and a run of one file) flake8 checks the files in its own process. Where the
+machine has a second core and the report is not kept yet, a forked child process analyses
+meanwhile (with the cores flake8 leaves it) and hands each file's results back; the checkers
+report nothing, and once flake8 is done the main process adds them the same way. A cold or
+edited run then costs about the longer of the two instead of their sum — pre-commit's run of
+the few files a commit changes included: flake8's own checks of them overlap the analysis.
+When the child could not hand its results back (it died, or failed), the main process
+analyses itself: the results never depend on the child.
 """
 from __future__ import annotations
 
@@ -40,7 +40,7 @@ import contextlib
 import functools
 import multiprocessing
 import os
-import signal
+import pickle
 import threading
 from typing import Any, Callable, Iterator
 
@@ -48,10 +48,6 @@ from . import forked
 
 #: Set by the main process for the workers of its pool: "the ROS results are mine".
 DEFER_ENV = "ROSGRAPH_DEFERRED_TO"
-#: Files a ``-j1`` run must check for a child to analyse beside it: flake8 checks a file in
-#: about a fiftieth of a second, and the main process reads the report again afterwards, so a
-#: run of a few files (pre-commit's) has nothing to gain.
-MIN_FILES_BESIDE = 16
 #: flake8's codes for a file it could not read or parse: the plugin never runs there.
 _UNCHECKED = frozenset({"E902", "E999"})
 
@@ -95,7 +91,7 @@ def install(results_of: Callable[[str], Results], wanted: Callable[[], bool],
         @functools.wraps(serial)
         def run_serial(self: Any) -> Any:
             filenames = list(_checked_files(self))
-            if _deferring or len(filenames) < MIN_FILES_BESIDE or not wanted() or not beside(filenames):
+            if _deferring or not wanted() or not beside(filenames):
                 return serial(self)
             return _run_serial_beside(self, serial, results_of, filenames)
 
@@ -188,33 +184,31 @@ def _run_serial_beside(manager: Any, original: Callable[[Any], Any], results_of:
     return outcome
 
 
-def _analyse_in_child(filenames: list[str], results_of: Callable[[str], Results], processes: int) -> int:
-    """Fork a child that analyses the workspaces of ``filenames`` with up to ``processes``
-    processes (:mod:`.forked`), leaves the reports in the cache and never returns into flake8."""
-    global _analysis_processes
-    child = os.fork()
-    if child == 0:
-        status = 1
-        try:
-            _analysis_processes = max(1, processes)
-            for filename in filenames:
-                results_of(filename)
-            status = 0
-        finally:
-            os._exit(status)
-    return child
+def _analyse_in_child(filenames: list[str], results_of: Callable[[str], Results],
+                      processes: int) -> forked.ForkedJobs:
+    """Fork a child that works out each file's results with up to ``processes`` processes
+    (:mod:`.forked`) and hands them back, pickled (they pass only from this process's child to
+    it); it never returns into flake8."""
+    def work(_job: int) -> bytes:
+        global _analysis_processes
+        _analysis_processes = max(1, processes)
+        return pickle.dumps({filename: results_of(filename) for filename in filenames})
+
+    return forked.ForkedJobs.start([0], work, 1)
 
 
-def _results_after(child: int, filenames: list[str], results_of: Callable[[str], Results]) -> dict[str, Results]:
-    """Once the child is done, each file's results: read from the cache it filled (or, when it
-    could not, analysed here: the results never depend on the child)."""
-    with contextlib.suppress(ChildProcessError):
-        os.waitpid(child, 0)
+def _results_after(child: forked.ForkedJobs, filenames: list[str],
+                   results_of: Callable[[str], Results]) -> dict[str, Results]:
+    """Once the child is done, each file's results: those it handed back (or, when it could
+    not, analysed here: the results never depend on the child)."""
+    sent = child.collect().get(0)
+    if sent is not None:
+        return pickle.loads(sent)
     return {filename: results_of(filename) for filename in filenames}
 
 
 @contextlib.contextmanager
-def _deferring_to(child: int | None) -> Iterator[None]:
+def _deferring_to(child: forked.ForkedJobs | None) -> Iterator[None]:
     """flake8's checkers leave their ROS results to this process while the block runs (the
     analysis runs in ``child``, or in a thread); an interrupted run stops the child."""
     global _deferring
@@ -228,12 +222,10 @@ def _deferring_to(child: int | None) -> Iterator[None]:
         _deferring = False
 
 
-def _stop(child: int | None) -> None:
+def _stop(child: forked.ForkedJobs | None) -> None:
     """flake8 was interrupted: the child's work is not wanted any more."""
     if child is not None:
-        with contextlib.suppress(OSError):
-            os.kill(child, signal.SIGTERM)
-            os.waitpid(child, 0)
+        child.stop()
 
 
 def analysis_processes() -> int:

@@ -314,11 +314,10 @@ class RosGraphChecker:
 
 
 def _analyse_beside(filenames: list[str]) -> bool:
-    """Whether flake8 -j1 may leave the analysis to a child process while it checks the files
-    (:mod:`.flake8_jobs`): a second core to run it on, ``fork``, a cache to hand the report
-    over in for every workspace checked, and some report not kept there yet (a warm run reads
-    them here); not for an editor's buffer, nor under ``--rosgraph-debug`` (a traceback
-    belongs to the process the user runs)."""
+    """Whether flake8 may leave the analysis to a child process while it checks the files
+    (:mod:`.flake8_jobs`): a second core to run it on, ``fork``, and some report to work out
+    (a warm run reads the kept ones here); not for an editor's buffer, nor under
+    ``--rosgraph-debug`` (a traceback belongs to the process the user runs)."""
     run = _RUN
     if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or forked.cores() < 2:
         return False
@@ -328,8 +327,7 @@ def _analyse_beside(filenames: list[str]) -> bool:
             roots.add(_root_for(run, Path(os.path.abspath(filename))))
         except RootRefused:
             continue
-    states = {kept_state(root, run.settings) for root in sorted(roots)}
-    return "missing" in states and "uncacheable" not in states
+    return any(kept_state(root, run.settings) != "kept" for root in sorted(roots))
 
 
 def _given_folders(options: Any) -> tuple[Path, ...]:

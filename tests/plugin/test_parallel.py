@@ -3,13 +3,12 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
-
-from flake8_rosgraph.flake8_jobs import MIN_FILES_BESIDE
 
 from .conftest import _FLAKE8_UNDER, EXPECTED_STANDARD, analyses, fake_env, parse_flake8, run_flake8
 
@@ -87,13 +86,30 @@ def test_with_jobs_a_child_of_the_main_process_analyses_and_no_worker_waits(pyth
 
 
 @pytest.mark.parametrize("method", ["fork", "spawn"])
-def test_with_jobs_and_no_cache_the_main_process_analyses(python: str, workspace: Path, tmp_path: Path,
-                                                          method: str) -> None:
-    """Without a cache to hand the report over in, flake8 -j2's main process analyses in a thread
-    beside its workers: still one analysis, in no worker."""
+def test_with_jobs_and_no_cache_the_child_hands_the_results_back(python: str, workspace: Path, tmp_path: Path,
+                                                                 method: str) -> None:
+    """Without a cache, flake8 -j2's analysis still runs in a child of the main process, which
+    hands each file's results back: one analysis, in no worker."""
     log = tmp_path / "analyses.log"
     child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, method, "--isolated", "--jobs", "2",
                               "--select", "ROS", "."], cwd=workspace, env=_uncached_env(tmp_path, log),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    stdout, stderr = child.communicate(timeout=600)
+    assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
+    [(pid, parent)] = [line.split()[:2] for line in analyses(log)]
+    assert parent == str(child.pid) and pid != str(child.pid)
+    assert not (workspace / ".rosgraph-cache").exists()
+
+
+@pytest.mark.skipif(shutil.which("taskset") is None or not hasattr(os, "sched_setaffinity"),
+                    reason="needs taskset (util-linux) to give flake8 one core")
+def test_with_jobs_on_one_core_the_main_process_analyses_in_a_thread(python: str, workspace: Path,
+                                                                     tmp_path: Path) -> None:
+    """With no second core for a child, flake8 -j2's main process analyses in a thread beside
+    its workers: still one analysis, in no worker."""
+    log = tmp_path / "analyses.log"
+    child = subprocess.Popen(["taskset", "-c", "0", python, "-c", _FLAKE8_UNDER, "fork", "--isolated",
+                              "--jobs", "2", "--select", "ROS", "."], cwd=workspace, env=fake_env(log),
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     stdout, stderr = child.communicate(timeout=600)
     assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
@@ -113,22 +129,15 @@ def _uncached_env(tmp_path: Path, log: Path) -> dict[str, str]:
     return fake_env(log, HOME=str(tmp_path / "home"), XDG_CACHE_HOME=str(tmp_path / "home" / ".cache"))
 
 
-def _with_utilities(workspace: Path) -> Path:
-    """The workspace with enough modules that a ``-j1`` run analyses beside its checks."""
-    for number in range(MIN_FILES_BESIDE):
-        (workspace / f"src/pkg_a/pkg_a/util_{number}.py").write_text(f"SCALE_{number} = {number}\n")
-    return workspace
-
-
 @pytest.mark.parametrize("delay", ["0", "3"])
 def test_with_one_job_a_child_analyses_while_flake8_checks(python: str, workspace: Path, tmp_path: Path,
                                                            delay: str) -> None:
-    """flake8 -j1 checks the files itself while a child process analyses and leaves the report in
-    the cache; the main process adds the findings afterwards, the same as one process finds,
-    however long the analysis takes."""
+    """flake8 -j1 checks the files itself while a child process analyses and hands the results
+    back; the main process adds the findings afterwards, the same as one process finds, however
+    long the analysis takes."""
     log = tmp_path / "analyses.log"
     child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
-                              "--select", "ROS", "."], cwd=_with_utilities(workspace),
+                              "--select", "ROS", "."], cwd=workspace,
                              env=fake_env(log, FAKE_ROSGRAPH_DELAY=delay),
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     stdout, stderr = child.communicate(timeout=600)
@@ -137,27 +146,36 @@ def test_with_one_job_a_child_analyses_while_flake8_checks(python: str, workspac
     assert parent == str(child.pid) and pid != str(child.pid)
 
 
-def test_a_run_of_a_few_files_analyses_in_flake8s_process(python: str, workspace: Path, tmp_path: Path) -> None:
-    """pre-commit's handful of files: nothing to overlap, so no child."""
+def test_a_run_of_one_file_analyses_beside_flake8s_checks_of_it(python: str, workspace: Path,
+                                                                 tmp_path: Path) -> None:
+    """pre-commit's one edited file: flake8's own checks of it overlap the analysis; a warm run
+    reads the kept report in flake8's process, with no child."""
     log = tmp_path / "analyses.log"
-    child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
-                              "--select", "ROS", "src/pkg_b/pkg_b/listener.py"], cwd=_with_utilities(workspace),
-                             env=fake_env(log), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    command = [python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1", "--select", "ROS",
+               "src/pkg_b/pkg_b/listener.py"]
+    child = subprocess.Popen(command, cwd=workspace, env=fake_env(log), stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
     stdout, stderr = child.communicate(timeout=600)
     assert parse_flake8(stdout) == [("src/pkg_b/pkg_b/listener.py", 7, 10, "ROS003")], stderr
-    assert [line.split()[0] for line in analyses(log)] == [str(child.pid)]
+    [(pid, parent)] = [line.split()[:2] for line in analyses(log)]
+    assert parent == str(child.pid) and pid != str(child.pid)
+    warm = subprocess.run(command, cwd=workspace, env=fake_env(log),
+                          capture_output=True, text=True, timeout=600)
+    assert warm.stdout == stdout and len(analyses(log)) == 1
 
 
-def test_with_one_job_and_no_cache_flake8_analyses_itself(python: str, workspace: Path, tmp_path: Path) -> None:
-    """Without a cache to hand the report over in, no child is started: one analysis, here."""
+def test_with_one_job_and_no_cache_the_child_hands_the_results_back(python: str, workspace: Path,
+                                                                     tmp_path: Path) -> None:
+    """Without a cache, the child's results reach flake8 all the same: one analysis, in the child."""
     log = tmp_path / "analyses.log"
     child = subprocess.Popen([python, "-c", _FLAKE8_UNDER, "default", "--isolated", "--jobs", "1",
-                              "--select", "ROS", "."], cwd=_with_utilities(workspace),
-                             env=_uncached_env(tmp_path, log),
+                              "--select", "ROS", "."], cwd=workspace, env=_uncached_env(tmp_path, log),
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     stdout, stderr = child.communicate(timeout=600)
     assert parse_flake8(stdout) == EXPECTED_STANDARD, stderr
-    assert [line.split()[0] for line in analyses(log)] == [str(child.pid)]
+    [(pid, parent)] = [line.split()[:2] for line in analyses(log)]
+    assert parent == str(child.pid) and pid != str(child.pid)
+    assert not (workspace / ".rosgraph-cache").exists()
 
 
 def test_noqa_on_a_later_line_of_the_statement_works_the_same_with_jobs(python: str, workspace: Path,
