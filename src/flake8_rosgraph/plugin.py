@@ -317,7 +317,9 @@ def _analyse_beside(filenames: list[str]) -> bool:
     """Whether flake8 may leave the analysis to a child process while it checks the files
     (:mod:`.flake8_jobs`): a second core to run it on, ``fork``, and some report to work out
     (a warm run reads the kept ones here); not for an editor's buffer, nor under
-    ``--rosgraph-debug`` (a traceback belongs to the process the user runs)."""
+    ``--rosgraph-debug`` (a traceback belongs to the process the user runs). Not either when a
+    SARIF sidecar is wanted and the report cannot be cached: the sidecar reads the findings'
+    related locations from the report in this process, which would analyse again."""
     run = _RUN
     if run is None or run.stdin or run.settings.debug or not hasattr(os, "fork") or forked.cores() < 2:
         return False
@@ -327,7 +329,10 @@ def _analyse_beside(filenames: list[str]) -> bool:
             roots.add(_root_for(run, Path(os.path.abspath(filename))))
         except RootRefused:
             continue
-    return any(kept_state(root, run.settings) != "kept" for root in sorted(roots))
+    states = {kept_state(root, run.settings) for root in sorted(roots)}
+    if run.settings.sarif and "uncacheable" in states:
+        return False
+    return bool(states - {"kept"})
 
 
 def _given_folders(options: Any) -> tuple[Path, ...]:

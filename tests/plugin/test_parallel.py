@@ -228,3 +228,17 @@ def test_pool_workers_yield_the_core_to_the_analysis(method: str) -> None:
     with multiprocessing.get_context(method).Pool(1) as pool:
         worker = pool.map(_niceness_after_yielding, [None])[0]
     assert worker == min(before + flake8_jobs.WORKER_NICENESS, 19)
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_sidecar_without_a_cache_is_written_from_the_one_analysis(python: str, workspace: Path,
+                                                                    tmp_path: Path, jobs: str) -> None:
+    """The SARIF sidecar reads the findings' related locations from the report in flake8's
+    process: without a cache to pass it through, that process analyses (once), no child."""
+    log = tmp_path / "analyses.log"
+    result = run_flake8(["--jobs", jobs, "--select", "ROS", "--rosgraph-sarif", "out.sarif", "."], workspace,
+                        _uncached_env(tmp_path, log), python)
+    assert parse_flake8(result.stdout) == EXPECTED_STANDARD, result.stderr
+    assert len(analyses(log)) == 1, analyses(log)
+    results = json.loads((workspace / "out.sarif").read_text())["runs"][0]["results"]
+    assert len(results) == len(EXPECTED_STANDARD)
