@@ -1,0 +1,154 @@
+"""Names found on a sixth round of repositories outside every test set: the constants a
+workspace's own interface files define (a ``Topics.msg`` naming every topic of a robot for
+its nodes). Each on a realistic multi-file workspace, with a twin where following the code
+must not invent a name.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from flake8_rosgraph import cache
+from flake8_rosgraph.interfaces.catalogue import interface_files
+from flake8_rosgraph.interfaces.constants import interface_constants
+from flake8_rosgraph.options import Settings
+
+from test_recall_globals_and_escapes import package
+from test_recall_mechanisms import entities
+from test_workspace_discovery import write
+
+KINDS = ("publishers", "subscriptions", "clients")
+
+# -- constants of the workspace's interface files ----------------------------------------------
+MSGS_XML = """
+    <?xml version="1.0"?>
+    <package format="3">
+      <name>auv_msgs</name>
+      <version>0.1.0</version>
+      <description>Messages and topic names of the vehicle</description>
+      <maintainer email="crew@example.com">crew</maintainer>
+      <license>BSD</license>
+      <buildtool_depend>ament_cmake</buildtool_depend>
+      <member_of_group>rosidl_interface_packages</member_of_group>
+      <export><build_type>ament_cmake</build_type></export>
+    </package>
+"""
+TOPICS_MSG = """
+    # One place for the topic names every node of the vehicle uses.
+    string DEPTH_TOPIC = 'core/depth'    # pressure sensor, metres
+    string THRUSTER_CMD_TOPIC="core/thruster_cmd"
+    string<=32 LEAK_TOPIC = core/leak
+    string ODD_TOPIC = core/odd#1
+    uint8 THRUSTERS = 2
+"""
+SETPOINT_SRV = """
+    string SERVICE = 'control/set_depth'
+    float64 depth
+    ---
+    bool accepted
+"""
+DEPTH_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Bool, Float64
+
+    from auv_msgs.msg import Topics
+    from auv_msgs.srv import SetDepth
+
+
+    class DepthController(Node):
+        def __init__(self):
+            super().__init__('depth_controller')
+            self.create_subscription(Float64, Topics.DEPTH_TOPIC, self.on_depth, 10)
+            self.create_subscription(Bool, Topics.LEAK_TOPIC, self.on_leak, 10)
+            self.thrust = self.create_publisher(Float64, Topics.THRUSTER_CMD_TOPIC, 10)
+            self.setpoint = self.create_client(SetDepth, SetDepth.Request.SERVICE)
+
+        def on_depth(self, msg):
+            pass
+
+        def on_leak(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(DepthController())
+"""
+
+
+def _vehicle(tmp_path: Path, node: str = DEPTH_NODE, topics: str = TOPICS_MSG) -> Path:
+    """An interface package ``auv_msgs`` beside a Python package whose node names its topics
+    by the message's constants."""
+    files = {"auv_msgs/package.xml": MSGS_XML, "auv_msgs/msg/Topics.msg": topics,
+             "auv_msgs/srv/SetDepth.srv": SETPOINT_SRV}
+    files.update(package("auv_control", "'depth_controller = auv_control.depth:main'", {"depth": node}))
+    return write(tmp_path / "ws", files)
+
+
+def test_a_constant_of_the_workspaces_message_is_the_topic_name(tmp_path: Path) -> None:
+    """``Topics.DEPTH_TOPIC`` is the text ``Topics.msg`` gives it, quoted either way, bounded
+    or not; a service's request part holds its own (``SetDepth.Request.SERVICE``)."""
+    root = _vehicle(tmp_path)
+    assert entities(root, KINDS) == {"/depth_controller": [
+        ("clients", "/control/set_depth"), ("publishers", "/core/thruster_cmd"),
+        ("subscriptions", "/core/depth"), ("subscriptions", "/core/leak")]}
+
+
+def test_a_constant_the_file_lacks_or_does_not_settle_stays_unknown(tmp_path: Path) -> None:
+    """The twin: an attribute the message does not define, an unquoted text holding ``#``
+    (a comment or the text?) and a class of the same name in a package the workspace does
+    not define are never given a name."""
+    node = DEPTH_NODE.replace("Topics.LEAK_TOPIC", "Topics.ODD_TOPIC") \
+        .replace("Topics.THRUSTER_CMD_TOPIC", "Topics.THRUSTER_TOPIC") \
+        .replace("from auv_msgs.srv", "from sub_msgs.msg import Topics as SubTopics\n    from auv_msgs.srv") \
+        .replace("Topics.DEPTH_TOPIC", "SubTopics.DEPTH_TOPIC")
+    root = _vehicle(tmp_path, node)
+    assert entities(root, KINDS) == {"/depth_controller": [
+        ("clients", "/control/set_depth"), ("publishers", "?"),
+        ("subscriptions", "?"), ("subscriptions", "?")]}
+
+
+def test_constants_are_read_as_rosidl_reads_them(tmp_path: Path) -> None:
+    """Numbers and booleans by their type, a service's parts under both names rclpy gives
+    their classes; a value that does not parse is left out."""
+    root = _vehicle(tmp_path, topics=TOPICS_MSG + "bool ENABLED=true\nfloat32 GAIN=1e-2\nint8 BAD=x\n")
+    found = interface_constants(interface_files(root, root))
+    assert found["auv_msgs.msg.Topics.THRUSTERS"] == 2
+    assert found["auv_msgs.msg.Topics.ENABLED"] is True
+    assert found["auv_msgs.msg.Topics.GAIN"] == 0.01
+    assert "auv_msgs.msg.Topics.BAD" not in found and "auv_msgs.msg.Topics.ODD_TOPIC" not in found
+    assert found["auv_msgs.srv.SetDepth.Request.SERVICE"] == "control/set_depth"
+    assert found["auv_msgs.srv.SetDepth_Request.SERVICE"] == "control/set_depth"
+
+
+SENSOR_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Bool, Float64
+
+
+    def main():
+        rclpy.init()
+        node = Node('pressure_sensor')
+        node.create_publisher(Float64, '/core/depth', 10)
+        node.create_publisher(Bool, '/core/leak', 10)
+        node.create_subscription(Float64, '/core/thruster_cmd', lambda msg: None, 10)
+        rclpy.spin(node)
+"""
+
+
+def test_an_edit_of_a_constant_reanalyses_the_code_that_reads_it(tmp_path: Path) -> None:
+    """The groups' kept facts depend on the constants: renaming a topic in ``Topics.msg``
+    shows in the next run's report through the cache, although no Python file changed."""
+    root = _vehicle(tmp_path)
+    write(root, package("auv_sensors", "'pressure = auv_sensors.pressure:main'", {"pressure": SENSOR_NODE}))
+
+    def codes() -> list[tuple[str, str]]:
+        cache.start_run()
+        report = cache.load_or_build(root, Settings())
+        return sorted((f.location.path, f.code) for f in report.findings)
+
+    assert codes() == []
+    topics = root / "auv_msgs/msg/Topics.msg"
+    topics.write_text(topics.read_text().replace("'core/depth'", "'core/depth_m'"))
+    assert ("auv_control/auv_control/depth.py", "ROS003") in codes()
