@@ -152,3 +152,58 @@ def test_an_edit_of_a_constant_reanalyses_the_code_that_reads_it(tmp_path: Path)
     topics = root / "auv_msgs/msg/Topics.msg"
     topics.write_text(topics.read_text().replace("'core/depth'", "'core/depth_m'"))
     assert ("auv_control/auv_control/depth.py", "ROS003") in codes()
+
+
+# -- the fallback of a failed message import ------------------------------------------------------
+FALLBACK_NODE = """
+    import rclpy
+    from rclpy.node import Node
+
+    try:
+        from geometry_msgs.msg import Twist
+        from vehicle_msgs.msg import MissionStatus
+    except ImportError:  # tests on a machine without the messages
+        Twist = None
+
+        class MissionStatus:
+            READY = 0
+            status = 0
+
+    from vehicle_control.topics import STATUS_TOPIC
+
+
+    class GateMission(Node):
+        def __init__(self):
+            super().__init__('gate_mission')
+            self.cmd = self.create_publisher(Twist, 'cmd_vel', 10)
+            self.status = self.create_publisher(MissionStatus, STATUS_TOPIC, 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(GateMission())
+"""
+
+
+def _typed_publishers(tmp_path: Path, node: str) -> list[tuple[str, str]]:
+    from flake8_rosgraph.analysis import build_graph
+    root = write(tmp_path / "ws", package("vehicle_control", "'gate = vehicle_control.gate:main'",
+                                          {"gate": node, "topics": "STATUS_TOPIC = 'mission/status'\n"}))
+    [found] = build_graph(root).nodes
+    return sorted((e.name or "?", e.type or "?") for e in found.entities if e.kind == "publishers")
+
+
+def test_the_fallback_of_a_failed_message_import_is_no_type(tmp_path: Path) -> None:
+    """``Twist = None`` and a stand-in class where the import failed create no publisher (rclpy
+    refuses a type without type support): the publisher that exists has the message's type."""
+    assert _typed_publishers(tmp_path, FALLBACK_NODE) == [
+        ("/cmd_vel", "geometry_msgs/msg/Twist"), ("/mission/status", "vehicle_msgs/msg/MissionStatus")]
+
+
+def test_a_workspace_class_alone_or_beside_an_unknown_is_no_type_either(tmp_path: Path) -> None:
+    """The twin: where the stand-in is the only possibility, or the other possibility is not
+    known, the type stays unknown rather than guessed."""
+    node = FALLBACK_NODE.replace("        from vehicle_msgs.msg import MissionStatus\n", "") \
+        .replace("from geometry_msgs.msg import Twist", "from geometry_msgs.msg import Twist\n"
+                 "        import vehicle_drivers\n        Twist = vehicle_drivers.command_type()")
+    assert _typed_publishers(tmp_path, node) == [("/cmd_vel", "?"), ("/mission/status", "?")]
