@@ -207,3 +207,68 @@ def test_a_workspace_class_alone_or_beside_an_unknown_is_no_type_either(tmp_path
         .replace("from geometry_msgs.msg import Twist", "from geometry_msgs.msg import Twist\n"
                  "        import vehicle_drivers\n        Twist = vehicle_drivers.command_type()")
     assert _typed_publishers(tmp_path, node) == [("/cmd_vel", "?"), ("/mission/status", "?")]
+
+
+# -- a setting's text with the whitespace around it dropped ----------------------------------------
+STRIPPED_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from rclpy.parameter import Parameter
+    from std_msgs.msg import String
+
+
+    class VoiceActivity(Node):
+        def __init__(self):
+            super().__init__('voice_activity')
+            self.declare_parameter('audio_topic', Parameter.Type.STRING)
+            self.declare_parameter('output_topic', 'voice/activity')
+            self.create_subscription(String, self._required_text('audio_topic'), self.on_audio, 10)
+            self.create_publisher(String, self._required_text('output_topic'), 10)
+            self.create_publisher(String, self.get_parameter('output_topic').value.strip('/') + '_raw', 10)
+
+        def _required_text(self, name):
+            parameter = self.get_parameter(name)
+            if parameter.type_ != Parameter.Type.STRING:
+                raise RuntimeError(f'{name} must be a string')
+            text = str(parameter.value).strip()
+            if not text:
+                raise RuntimeError(f'{name} is required')
+            return text
+
+        def on_audio(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(VoiceActivity())
+"""
+VOICE_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='voice', executable='activity',
+                 parameters=[{'audio_topic': 'mic/frames', 'output_topic': '/speech/activity'}]),
+        ])
+"""
+
+
+def test_a_stripped_setting_is_still_the_setting_a_launch_file_sets(tmp_path: Path) -> None:
+    """``str(param.value).strip()`` in a helper is the parameter still: in code the name without
+    a default is unknown and the one with a default is the default, and the launch file's
+    values name both. ``strip('/')`` (which drops text) and what is joined to it are not the
+    setting: under the launch file that name stays the code's."""
+    from flake8_rosgraph.analysis import build_graph
+    from test_parameter_named_entities import launched, named
+
+    files = package("voice", "'activity = voice.activity:main'", {"activity": STRIPPED_NODE})
+    files["voice/launch/voice.launch.py"] = VOICE_LAUNCH
+    graph = build_graph(write(tmp_path / "ws", files))
+    assert named(graph, "/voice_activity") == {
+        12: {(None, "audio_topic")}, 13: {("/voice/activity", "output_topic")}, 14: {("/voice/activity_raw", None)}}
+    assert launched(graph, "voice.launch.py")["/voice_activity"] == {
+        12: {("/mic/frames", "audio_topic")}, 13: {("/speech/activity", "output_topic")},
+        14: {("/voice/activity_raw", None)}}

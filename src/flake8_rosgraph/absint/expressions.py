@@ -9,7 +9,7 @@ import ast
 import itertools
 from typing import Callable
 
-from .folding import BINOPS, CMPOPS, UNARYOPS, fold
+from .folding import BINOPS, CMPOPS, SAME_TEXT, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
@@ -372,7 +372,15 @@ class ExpressionSemantics:
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
-        func = self.eval(node.func)
+        if isinstance(node.func, ast.Attribute):
+            holder = self.eval(node.func.value)
+            if node.func.attr in SAME_TEXT and not node.args and not node.keywords \
+                    and holder.origin is not None and all(isinstance(c, str) for c in holder.consts() or ()):
+                return holder  # still the setting, named by its origin
+            self.record_attribute_load(node.func, holder)
+            func = self.load_attr(holder, node.func.attr)
+        else:
+            func = self.eval(node.func)
         args: list[Value] = []
         star = False
         for arg in node.args:
