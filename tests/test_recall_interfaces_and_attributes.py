@@ -272,3 +272,104 @@ def test_a_stripped_setting_is_still_the_setting_a_launch_file_sets(tmp_path: Pa
     assert launched(graph, "voice.launch.py")["/voice_activity"] == {
         12: {("/mic/frames", "audio_topic")}, 13: {("/speech/activity", "output_topic")},
         14: {("/voice/activity_raw", None)}}
+
+
+# -- an attribute read back where the function just stored it ---------------------------------------
+CAMERA_NODE = """
+    import sys
+
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import CameraInfo, Image
+    from std_msgs.msg import String
+
+    from camera_tools.streams import stream_topic
+
+
+    class PointCloudService(Node):
+        def __init__(self):
+            super().__init__('pointcloud_service')
+            self.declare_parameter('camera_name', 'd415')
+            self.camera_name = self.get_parameter('camera_name').value
+            self.declare_parameter('rate', 10.0)
+            prefix = f'/fv/{self.camera_name}'
+            self.depth_sub = self.create_subscription(Image, f'{prefix}/depth', self.on_depth, 10)
+            self.status_topic = 'status'
+            self.status = self.create_publisher(String, self.status_topic, 10)
+            if self.camera_name.startswith('d4'):
+                self.info_topic = stream_topic(self.camera_name, 'info')
+            self.info = self.create_subscription(CameraInfo, self.info_topic, self.on_info, 10)
+
+        def on_depth(self, msg):
+            self.status_topic = msg.header.frame_id
+
+        def on_info(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        node = PointCloudService()
+        if len(sys.argv) > 1:
+            node.camera_name = sys.argv[1]
+        rclpy.spin(node)
+"""
+STREAMS_MODULE = """
+    def stream_topic(camera, stream):
+        return f'/{camera}/{stream}'
+"""
+
+
+def _camera(tmp_path: Path, node: str) -> dict[str, list[tuple[str, str]]]:
+    root = write(tmp_path / "ws", package("camera_tools", "'pointcloud = camera_tools.pointcloud:main'",
+                                          {"pointcloud": node, "streams": STREAMS_MODULE}))
+    return entities(root, ("publishers", "subscriptions"))
+
+
+def test_an_attribute_is_read_back_as_the_function_just_stored_it(tmp_path: Path) -> None:
+    """``self.camera_name`` right after ``__init__`` stored the parameter is the parameter,
+    not also the command-line value ``main`` stores later; ``self.status_topic`` is
+    ``'status'``, not also the frame id a callback stores (the library calls in between store
+    nothing on the node)."""
+    found = _camera(tmp_path, CAMERA_NODE)
+    assert found == {"/pointcloud_service": [
+        ("publishers", "/status"), ("subscriptions", "/d415/info"), ("subscriptions", "/fv/d415/depth")]}
+
+
+def test_an_attribute_a_call_in_between_may_have_stored_is_not_remembered(tmp_path: Path) -> None:
+    """The twin: after a call of the node's own method (which may store any attribute), every
+    read is the heap's join again — the status topic is ``'status'``, ``'diagnostics'`` or a
+    callback's frame id, the camera name possibly ``main``'s unknown one — never the value
+    stored before the call alone."""
+    node = CAMERA_NODE.replace(
+        "            self.status = self.create_publisher(String, self.status_topic, 10)\n",
+        "            self.configure()\n"
+        "            self.status = self.create_publisher(String, self.status_topic, 10)\n") \
+        .replace("        def on_info(self, msg):\n", "        def configure(self):\n"
+                 "            self.status_topic = 'diagnostics'\n\n"
+                 "        def on_info(self, msg):\n")
+    assert _camera(tmp_path, node) == {"/pointcloud_service": [
+        ("publishers", "/diagnostics"), ("publishers", "/status"), ("publishers", "?"),
+        ("subscriptions", "/d415/info"), ("subscriptions", "/fv/d415/depth"), ("subscriptions", "?")]}
+
+
+def test_a_store_on_some_paths_only_joins_with_what_was_there(tmp_path: Path) -> None:
+    """The other twin: a store on one branch is remembered beside the earlier store of the
+    other path, and a property's setter is no plain store: its getter is read."""
+    node = CAMERA_NODE.replace(
+        "            self.status = self.create_publisher(String, self.status_topic, 10)\n",
+        "            if self.has_parameter('verbose'):\n"
+        "                self.status_topic = 'status/verbose'\n"
+        "            self.status = self.create_publisher(String, self.status_topic, 10)\n"
+        "            self.depth_topic = 'depth'\n"
+        "            self.create_publisher(Image, self.depth_topic, 10)\n") \
+        .replace("        def on_info(self, msg):\n", "        @property\n"
+                 "        def depth_topic(self):\n"
+                 "            return f'/{self.camera_name}/{self._depth}'\n\n"
+                 "        @depth_topic.setter\n"
+                 "        def depth_topic(self, value):\n"
+                 "            self._depth = value\n\n"
+                 "        def on_info(self, msg):\n")
+    publishers = sorted(name for kind, name in _camera(tmp_path, node)["/pointcloud_service"]
+                        if kind == "publishers")
+    assert publishers == ["/d415/depth", "/status", "/status/verbose", "?"]

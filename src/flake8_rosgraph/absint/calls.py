@@ -58,6 +58,7 @@ class CallSemantics:
         return self.call(self.load_attr(target, name), Args(args, {}, False), node)
 
     def call(self, func: Value, args: "Args", node: ast.AST | None) -> Value:
+        self.forget_for_call(func)
         if func.is_top:
             self._escape(args)
             return TOP
@@ -796,7 +797,7 @@ class CallSemantics:
         if frame.func is None or frame.cls is not None:
             return TOP
         bound = sorted((name, value) for name, value in frame.env.items()
-                       if not name.startswith("$") and not value.is_bottom)
+                       if not name.startswith(("$", ".")) and not value.is_bottom)
         for _, value in bound:
             self.escape_value(value)
         if len(bound) > MAX_DICT_ITEMS:

@@ -47,9 +47,13 @@ class ExpressionSemantics:
         return self.load_name(node.id)
 
     def e_Attribute(self, node: ast.Attribute) -> Value:
-        holder = self.eval(node.value)
+        return self.attribute_of(node, self.eval(node.value))
+
+    def attribute_of(self, node: ast.Attribute, holder: Value) -> Value:
+        """The attribute ``node`` reads of ``holder`` (what ``node.value`` evaluated to)."""
         self.record_attribute_load(node, holder)
-        return self.load_attr(holder, node.attr)
+        remembered = self.remembered_attribute(node)
+        return remembered if remembered is not None else self.load_attr(holder, node.attr)
 
     def e_NamedExpr(self, node: ast.NamedExpr) -> Value:
         value = self.eval(node.value)
@@ -314,7 +318,9 @@ class ExpressionSemantics:
         return atoms([FuncAtom(self.program.fid_of[id(node)])])
 
     def e_Await(self, node: ast.Await) -> Value:
-        return self.eval(node.value)
+        value = self.eval(node.value)
+        self.forget_attributes()  # other coroutines run meanwhile
+        return value
 
     def e_Yield(self, node: ast.Yield) -> Value:
         """What the generator yields is kept per function (``("yield", fid)``): a framework
@@ -326,6 +332,7 @@ class ExpressionSemantics:
         if func is not None and isinstance(node, ast.Yield):
             self.an.write(("yield", func.fid), value)
             self.an.write(("yield", self.frame.task), value)
+        self.forget_attributes()  # the generator's consumer runs meanwhile
         return TOP
 
     e_YieldFrom = e_Yield
@@ -377,8 +384,7 @@ class ExpressionSemantics:
             if node.func.attr in SAME_TEXT and not node.args and not node.keywords \
                     and holder.origin is not None and all(isinstance(c, str) for c in holder.consts() or ()):
                 return holder  # still the setting, named by its origin
-            self.record_attribute_load(node.func, holder)
-            func = self.load_attr(holder, node.func.attr)
+            func = self.attribute_of(node.func, holder)
         else:
             func = self.eval(node.func)
         args: list[Value] = []
