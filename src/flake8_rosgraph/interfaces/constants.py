@@ -17,7 +17,7 @@ import re
 from typing import Iterable, Union
 
 from .catalogue import InterfaceFile
-from .definitions import PARTS
+from .definitions import PARTS, InterfaceError, split_parts
 
 ConstantValue = Union[str, int, float, bool]
 
@@ -36,22 +36,14 @@ def interface_constants(files: Iterable[InterfaceFile]) -> dict[str, ConstantVal
     for file in files:
         if file.text is None:
             continue
-        chunks = _parts(file.text, len(PARTS[file.kind]))
+        try:
+            chunks = split_parts(file.text, file.package, file.kind, file.name)
+        except InterfaceError:  # the catalogue reports it
+            continue
         for suffix, chunk in zip(PARTS[file.kind], chunks):
             for owner in _owners(file.package, file.kind, file.name, suffix):
                 out.update((f"{owner}.{name}", value) for name, value in _constants(chunk))
     return out
-
-
-def _parts(text: str, count: int) -> list[list[str]]:
-    """The lines of each part of an interface file (``---`` separates a request from its response)."""
-    chunks: list[list[str]] = [[]]
-    for line in text.splitlines():
-        if line.strip() == "---":
-            chunks.append([])
-        else:
-            chunks[-1].append(line)
-    return chunks[:count]
 
 
 def _owners(package: str, kind: str, name: str, suffix: str) -> list[str]:
