@@ -373,3 +373,66 @@ def test_a_store_on_some_paths_only_joins_with_what_was_there(tmp_path: Path) ->
     publishers = sorted(name for kind, name in _camera(tmp_path, node)["/pointcloud_service"]
                         if kind == "publishers")
     assert publishers == ["/d415/depth", "/status", "/status/verbose", "?"]
+
+
+# -- the values pytest's parametrize lists for a test ------------------------------------------
+PROBE_CLIENT = """
+    import rclpy
+    from geometry_msgs.msg import TwistStamped
+    from nav_msgs.msg import Odometry
+
+
+    class CommandProbe:
+        def __init__(self, robot_name):
+            self.node = rclpy.create_node(f'{robot_name}_probe')
+            self.commands = self.node.create_publisher(TwistStamped, f'/{robot_name}/reference', 10)
+            self.odometry = self.node.create_subscription(
+                Odometry, f'/{robot_name}/odometry', self.on_odometry, 10)
+
+        def on_odometry(self, msg):
+            self.latest = msg
+"""
+PROBE_TEST = """
+    import pytest
+    import rclpy
+
+    from vehicle_tests.probe import CommandProbe
+
+
+    @pytest.mark.parametrize('vehicle', ['ackermann', 'mecanum'])
+    def test_the_vehicle_takes_commands(vehicle):
+        rclpy.init()
+        probe = CommandProbe(f'{vehicle}_runtime')
+        assert probe.node.count_subscribers(f'/{vehicle}_runtime/reference') == 1
+"""
+
+
+def _probes(tmp_path: Path, test: str) -> dict[str | None, list[tuple[str, str]]]:
+    root = write(tmp_path / "ws", {**package("vehicle_tests", "", {"probe": PROBE_CLIENT}),
+                                   "vehicle_tests/test/test_runtime.py": test})
+    return entities(root, ("publishers", "subscriptions"))
+
+
+def test_each_listed_value_of_a_parametrized_test_keeps_its_own_names(tmp_path: Path) -> None:
+    """pytest runs the test once per listed vehicle: each run's probe node has that vehicle's
+    topics only (the values are not joined, which would give every node both)."""
+    assert _probes(tmp_path, PROBE_TEST) == {
+        "/ackermann_runtime_probe": [("publishers", "/ackermann_runtime/reference"),
+                                     ("subscriptions", "/ackermann_runtime/odometry")],
+        "/mecanum_runtime_probe": [("publishers", "/mecanum_runtime/reference"),
+                                   ("subscriptions", "/mecanum_runtime/odometry")]}
+
+
+def test_values_listed_in_rows_or_too_many_stay_unknown(tmp_path: Path) -> None:
+    """The twin: rows for two parameters, and more combinations than a function's contexts
+    keep, leave the names unknown rather than pair them wrongly."""
+    rows = PROBE_TEST.replace("@pytest.mark.parametrize('vehicle', ['ackermann', 'mecanum'])",
+                              "@pytest.mark.parametrize('vehicle, wheels', [('ackermann', 4), ('mecanum', 4)])") \
+        .replace("(vehicle)", "(vehicle, wheels)")
+    unknown = {None: [("publishers", "?"), ("subscriptions", "?")]}
+    assert _probes(tmp_path / "rows", rows) == unknown
+    many = PROBE_TEST.replace("@pytest.mark.parametrize('vehicle', ['ackermann', 'mecanum'])",
+                              "@pytest.mark.parametrize('vehicle', ['a', 'b', 'c', 'd', 'e'])\n"
+                              "    @pytest.mark.parametrize('speed', [1, 2, 3, 4, 5])") \
+        .replace("(vehicle)", "(vehicle, speed)")
+    assert _probes(tmp_path / "many", many) == unknown

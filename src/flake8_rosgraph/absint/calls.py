@@ -182,6 +182,21 @@ class CallSemantics:
                         self._bind_loose(func, receiver))
         return ctx
 
+    def entry_contexts(self, fid: int) -> list[tuple]:
+        """The contexts a function no analysed code calls is analysed in: its default context
+        — one per combination of the values pytest's ``parametrize`` lists for a test's
+        parameters, as pytest runs it once with each, so that a value stays with the names
+        built from it (a robot's node and its topics); more combinations than the function's
+        contexts keep their own leave them unknown."""
+        ctx = self.default_context(fid, None)
+        names = self.param_names(self.program.functions[fid])
+        combinations = [ctx]
+        for name, values in self.fixtures.listed_values(self.program.functions[fid]).items():
+            if name in names:
+                at = names.index(name)
+                combinations = [c[:at] + (v,) + c[at + 1:] for c in combinations for v in values]
+        return combinations if len(combinations) <= self.an.context_bound(fid) else [ctx]
+
     def _bind_loose(self, func: Function, receiver: Atom | None) -> list[Value]:
         names = self.param_names(func)
         first = [atoms([receiver])] if receiver is not None else []
