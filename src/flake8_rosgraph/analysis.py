@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import gc
+import hashlib
 import json
 import pickle
 import traceback
@@ -29,9 +30,11 @@ from . import forked
 from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
+from .absint.values import const
 from .escaping import escape_text
 from .graph.model import Diagnostic, RosGraph, RosNode, internal_error
 from .interfaces.catalogue import generated_class_identity
+from .interfaces.constants import ConstantValue, interface_constants
 from .launch.packages import Executable
 from .launch.targets import entry_key, runs_module
 from .metadata import WorkspaceMetadata, read_metadata
@@ -64,16 +67,20 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
     return library, diagnostics
 
 
-def _library_loader(stub_files: Sequence[Path], diagnostics: list[Diagnostic]) -> Callable[[], LibraryModel]:
+def _library_loader(stub_files: Sequence[Path], diagnostics: list[Diagnostic],
+                    constants: dict[str, ConstantValue]) -> Callable[[], LibraryModel]:
     """The library model, loaded when a group of modules is first analysed (a run whose groups all
     come from the cache never needs it), its problems added to ``diagnostics`` then — or at once
     when the user gives stub files, whose problems every run must report (the shipped stubs
-    have none: tested)."""
+    have none: tested). ``constants``: those of the workspace's interface files, which the
+    generated classes the code imports hold (a stub's own model of a name wins)."""
     loaded: list[LibraryModel] = []
 
     def library() -> LibraryModel:
         if not loaded:
             model, problems = load_stubs(stub_files)
+            for name, value in constants.items():
+                model.constants.setdefault(name, const(value))
             diagnostics.extend(problems)
             loaded.append(model)
         return loaded[0]
@@ -200,9 +207,12 @@ class _Group:
     program: Program
     executables: list[Executable]
     framework: dict[str, str]
+    #: A digest of the workspace's interface constants (:func:`.interface_constants`), which
+    #: the analysis reads where code imports them.
+    constants: str
 
     @classmethod
-    def of(cls, program: Program, metadata: WorkspaceMetadata) -> _Group:
+    def of(cls, program: Program, metadata: WorkspaceMetadata, constants: str) -> _Group:
         paths = {m.path for m in program.modules.values()}
         executables = sorted((exe for package in metadata.packages.packages.values()
                               for exe in package.executables.values()
@@ -210,14 +220,15 @@ class _Group:
                              key=entry_key)
         framework = {c: base for c, base in metadata.registered.items()
                      if c.rpartition(".")[0] in program.modules}
-        return cls(program, executables, framework)
+        return cls(program, executables, framework, constants)
 
     @functools.cached_property
     def inputs(self) -> str:
         """What identifies the group's facts: its modules' names, paths and contents, and the rest."""
         return json.dumps([[[m.name, m.path, m.is_package, m.program, m.digest]
                             for m in self.program.modules.values()],
-                           sorted(self.framework.items()), [entry_key(exe) for exe in self.executables]])
+                           sorted(self.framework.items()), [entry_key(exe) for exe in self.executables],
+                           self.constants])
 
     @functools.cached_property
     def weight(self) -> int:
@@ -307,16 +318,18 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
                  kept: list[Analysis] | None = None) -> RosGraph:
     diagnostics: list[Diagnostic] = []
     try:
-        library = _library_loader(stub_files, diagnostics)
         metadata = metadata_memo(lambda: read_metadata(root)) if metadata_memo is not None \
             else read_metadata(root)
         diagnostics.extend(metadata.diagnostics)
+        constants = interface_constants(metadata.interface_files)
+        library = _library_loader(stub_files, diagnostics, constants)
+        constants_key = hashlib.sha256(json.dumps(sorted(constants.items())).encode()).hexdigest()
         workspace = load_workspace(root, buffers, outlines,
                                    [root / rel for rel in metadata.python_files] if root.is_dir() else None)
         diagnostics.extend(workspace.diagnostics)
         program = Program(workspace.modules)
-        groups = _GroupsFacts.start([_Group.of(program.part(names), metadata) for names in program.components()],
-                                    library, facts_memo, kept)
+        groups = _GroupsFacts.start([_Group.of(program.part(names), metadata, constants_key)
+                                     for names in program.components()], library, facts_memo, kept)
         cpp = _cpp_nodes(root, diagnostics, cpp_memo)  # meanwhile, if groups run in other processes
         python = merged(groups.finish())
         diagnostics.extend(python.diagnostics)

@@ -250,7 +250,15 @@ class _Explainer:
             return Explanation(site, "missing", (
                 "the object it is created on is not known to be a node here",
                 *self._origin_reasons(call, scope, _node_argument(call), module),))
+        func = self._function_of(scope)
         if not unknowns:
+            if func is not None and self._overflowed(func):
+                # The calls past the bound ran with unknown arguments: what they create on
+                # another node or under another name is not in the graph, whatever this shows.
+                return Explanation(site, "unknown", (
+                    "unknown entities of some calls", f"{func.qualname} is called in more than "
+                    f"{self.an.context_bound(func.fid)} different ways; the further calls were analysed "
+                    "with unknown arguments and what they create is not in the graph"))
             return Explanation(site, "complete", ())
         reasons = list(unknowns)
         stopped = self._stopped_reason(key)
@@ -269,7 +277,6 @@ class _Explainer:
                     found = [f"`{param}` is not passed: {model.qualname} chooses the {field} "
                              "when it runs"]
             reasons.extend(found)
-        func = self._function_of(scope)
         if func is not None and self._overflowed(func):
             reasons.append(f"{func.qualname} is called in more than "
                            f"{self.an.context_bound(func.fid)} different ways and was "

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+import textwrap
 from pathlib import Path
 
 from flake8_rosgraph.analysis import analyse
@@ -330,6 +331,55 @@ def test_calls_of_the_workspaces_own_wrappers_are_not_sites(tmp_path: Path) -> N
                 Arming(node).arm()
                 PluginModule(node).own_trigger()
                 rclpy.spin(Bare())
+        """,
+    })
+    check(tmp_path)
+
+
+def test_a_site_whose_function_is_called_past_the_context_bound_is_not_complete(tmp_path: Path) -> None:
+    """A helper called with more names than calls keep their arguments: the graph lists the
+    first calls' topics, all known, but the further calls (analysed with unknown arguments,
+    the node too) create what the graph lacks — not "complete". The same helper called a few
+    times is complete."""
+    many = "".join(f"    add_topic(node, 'cell_{i}/temperature')\n" for i in range(30))
+    write(tmp_path, {
+        "battery/package.xml": PACKAGE_XML.format(name="battery"),
+        "battery/setup.py": """
+            from setuptools import setup
+            setup(name='battery', packages=['battery'],
+                  entry_points={'console_scripts': ['cells = battery.cells:main',
+                                                    'pack = battery.pack:main']})
+        """,
+        "battery/battery/__init__.py": "",
+        "battery/battery/cells.py": textwrap.dedent("""
+            import rclpy
+            from rclpy.node import Node
+            from sensor_msgs.msg import Temperature
+
+
+            def add_topic(node, name):
+                return node.create_publisher(Temperature, name, 10)  # unknown: called in more than 24 different ways
+
+
+            def main():
+                rclpy.init()
+                node = Node('cell_monitor')  # ok
+        """) + many,
+        "battery/battery/pack.py": """
+            import rclpy
+            from rclpy.node import Node
+            from sensor_msgs.msg import Temperature
+
+
+            def add_topic(node, name):
+                return node.create_publisher(Temperature, name, 10)  # ok
+
+
+            def main():
+                rclpy.init()
+                node = Node('pack_monitor')  # ok
+                add_topic(node, 'pack/temperature')
+                add_topic(node, 'pack/ambient_temperature')
         """,
     })
     check(tmp_path)

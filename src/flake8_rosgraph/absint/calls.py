@@ -58,6 +58,7 @@ class CallSemantics:
         return self.call(self.load_attr(target, name), Args(args, {}, False), node)
 
     def call(self, func: Value, args: "Args", node: ast.AST | None) -> Value:
+        self.forget_for_call(func)
         if func.is_top:
             self._escape(args)
             return TOP
@@ -180,6 +181,21 @@ class CallSemantics:
             ctx = tuple(TOP if v.is_bottom else v for v in
                         self._bind_loose(func, receiver))
         return ctx
+
+    def entry_contexts(self, fid: int) -> list[tuple]:
+        """The contexts a function no analysed code calls is analysed in: its default context
+        — one per combination of the values pytest's ``parametrize`` lists for a test's
+        parameters, as pytest runs it once with each, so that a value stays with the names
+        built from it (a robot's node and its topics); more combinations than the function's
+        contexts keep their own leave them unknown."""
+        ctx = self.default_context(fid, None)
+        names = self.param_names(self.program.functions[fid])
+        combinations = [ctx]
+        for name, values in self.fixtures.listed_values(self.program.functions[fid]).items():
+            if name in names:
+                at = names.index(name)
+                combinations = [c[:at] + (v,) + c[at + 1:] for c in combinations for v in values]
+        return combinations if len(combinations) <= self.an.context_bound(fid) else [ctx]
 
     def _bind_loose(self, func: Function, receiver: Atom | None) -> list[Value]:
         names = self.param_names(func)
@@ -796,7 +812,7 @@ class CallSemantics:
         if frame.func is None or frame.cls is not None:
             return TOP
         bound = sorted((name, value) for name, value in frame.env.items()
-                       if not name.startswith("$") and not value.is_bottom)
+                       if not name.startswith(("$", ".")) and not value.is_bottom)
         for _, value in bound:
             self.escape_value(value)
         if len(bound) > MAX_DICT_ITEMS:

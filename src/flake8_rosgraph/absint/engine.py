@@ -422,7 +422,8 @@ class Analysis:
                     and func.module.name in self.relevant and not isinstance(func.node, ast.Lambda)]
         first = [func for func in uncalled if func.node.name not in self.program.read_names] or uncalled
         for func in first:
-            self.function_task(func.fid, self._interp.default_context(func.fid, None))
+            for ctx in self._interp.entry_contexts(func.fid):
+                self.function_task(func.fid, ctx)
         return bool(first)
 
     def _entry_classes(self) -> bool:

@@ -9,7 +9,7 @@ import ast
 import itertools
 from typing import Callable
 
-from .folding import BINOPS, CMPOPS, UNARYOPS, fold
+from .folding import BINOPS, CMPOPS, SAME_TEXT, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
@@ -47,9 +47,13 @@ class ExpressionSemantics:
         return self.load_name(node.id)
 
     def e_Attribute(self, node: ast.Attribute) -> Value:
-        holder = self.eval(node.value)
+        return self.attribute_of(node, self.eval(node.value))
+
+    def attribute_of(self, node: ast.Attribute, holder: Value) -> Value:
+        """The attribute ``node`` reads of ``holder`` (what ``node.value`` evaluated to)."""
         self.record_attribute_load(node, holder)
-        return self.load_attr(holder, node.attr)
+        remembered = self.remembered_attribute(node)
+        return remembered if remembered is not None else self.load_attr(holder, node.attr)
 
     def e_NamedExpr(self, node: ast.NamedExpr) -> Value:
         value = self.eval(node.value)
@@ -314,7 +318,9 @@ class ExpressionSemantics:
         return atoms([FuncAtom(self.program.fid_of[id(node)])])
 
     def e_Await(self, node: ast.Await) -> Value:
-        return self.eval(node.value)
+        value = self.eval(node.value)
+        self.forget_attributes()  # other coroutines run meanwhile
+        return value
 
     def e_Yield(self, node: ast.Yield) -> Value:
         """What the generator yields is kept per function (``("yield", fid)``): a framework
@@ -326,6 +332,7 @@ class ExpressionSemantics:
         if func is not None and isinstance(node, ast.Yield):
             self.an.write(("yield", func.fid), value)
             self.an.write(("yield", self.frame.task), value)
+        self.forget_attributes()  # the generator's consumer runs meanwhile
         return TOP
 
     e_YieldFrom = e_Yield
@@ -372,7 +379,14 @@ class ExpressionSemantics:
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
-        func = self.eval(node.func)
+        if isinstance(node.func, ast.Attribute):
+            holder = self.eval(node.func.value)
+            if node.func.attr in SAME_TEXT and not node.args and not node.keywords \
+                    and holder.origin is not None and all(isinstance(c, str) for c in holder.consts() or ()):
+                return holder  # still the setting, named by its origin
+            func = self.attribute_of(node.func, holder)
+        else:
+            func = self.eval(node.func)
         args: list[Value] = []
         star = False
         for arg in node.args:

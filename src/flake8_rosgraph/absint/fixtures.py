@@ -6,8 +6,8 @@ name, the function decorated with ``@pytest.fixture`` (or ``fixture`` imported f
 pytest; ``name=`` renames it) — what it returns or, for a generator fixture, what it
 yields. A fixture is looked up in the test's own module first, then in the ``conftest.py``
 of its folder and of each folder above. A parameter that ``@pytest.mark.parametrize``
-names gets the listed values instead, and a name no fixture of the workspace defines (a
-plugin's, pytest's own ``request``) stays unknown.
+names gets the listed values instead (known when literals are listed for it alone), and a
+name no fixture of the workspace defines (a plugin's, pytest's own ``request``) stays unknown.
 
 This module only finds, syntactically, which fixture function each parameter names; the
 interpreter reads the fixture's value from the heap, and runs the test only once every
@@ -63,20 +63,37 @@ class Fixtures:
         """Parameter name -> fid of the fixture pytest passes for it, for a function pytest
         calls (a module-level ``test*`` function or fixture of a test file, or a ``test*``
         function a factory defines: see :meth:`_made_test`); empty otherwise."""
-        if isinstance(func.node, ast.Lambda) or func.cls is not None:
-            return {}
-        if func.parent is not None:
-            if not self._made_test(func):
-                return {}
-        elif not is_test_file(func.module.path):
+        if not self._called_by_pytest(func):
             return {}
         visible = self._visible_in(func.module)
-        if not (func.node.name.startswith("test") or func.fid in visible.values()):
-            return {}
         a = func.node.args
         params = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
         given = _parametrized(func.node)
         return {name: visible[name] for name in params if name in visible and name not in given}
+
+    def listed_values(self, func: Function) -> dict[str, list[Value]]:
+        """Parameter name -> the values ``@pytest.mark.parametrize('name', [...])`` lists for
+        it, for a function pytest calls: it runs the function once with each (once with each
+        combination, for several such decorators). Only a decorator naming one parameter and
+        listing literals counts; values listed in rows for several parameters stay unknown."""
+        if not self._called_by_pytest(func):
+            return {}
+        out: dict[str, list[Value]] = {}
+        for decorator in func.node.decorator_list:
+            found = _listed(decorator)
+            if found is not None:
+                out[found[0]] = [const(v) for v in found[1]]
+        return out
+
+    def _called_by_pytest(self, func: Function) -> bool:
+        if isinstance(func.node, ast.Lambda) or func.cls is not None:
+            return False
+        if func.parent is not None:
+            if not self._made_test(func):
+                return False
+        elif not is_test_file(func.module.path):
+            return False
+        return func.node.name.startswith("test") or func.fid in self._visible_in(func.module).values()
 
     def _made_test(self, func: Function) -> bool:
         """A ``test*`` function defined inside a function (a factory that hands its tests to
@@ -175,6 +192,24 @@ def _names_pytest_fixture(expr: ast.expr, module: Module) -> bool:
             alias.name == "fixture" and (alias.asname or alias.name) == expr.id
             for alias in stmt.names) for stmt in module.tree.body)
     return False
+
+
+def _listed(decorator: ast.expr) -> tuple[str, list] | None:
+    """``(parameter, values)`` of ``@pytest.mark.parametrize('name', [literal, …])``."""
+    if not (isinstance(decorator, ast.Call) and isinstance(decorator.func, ast.Attribute)
+            and decorator.func.attr == "parametrize" and len(decorator.args) == 2
+            and not any(k.arg == "indirect" for k in decorator.keywords)):
+        return None
+    first, rows = decorator.args
+    if not (isinstance(first, ast.Constant) and isinstance(first.value, str)
+            and first.value.strip().isidentifier()) or not isinstance(rows, (ast.List, ast.Tuple)):
+        return None
+    values = []
+    for row in rows.elts:
+        if not isinstance(row, ast.Constant) or not isinstance(row.value, (str, int, float, bool, type(None))):
+            return None
+        values.append(row.value)
+    return (first.value.strip(), values) if values else None
 
 
 def _parametrized(node: ast.FunctionDef | ast.AsyncFunctionDef) -> frozenset[str]:

@@ -59,6 +59,11 @@ STR_METHODS = frozenset({
     "swapcase", "center", "ljust", "rjust", "encode",
 })
 
+#: str methods whose result, called without arguments on a setting's text, is taken to be the
+#: setting itself: they only drop the whitespace around it, which is the layout of the file
+#: or command line that supplies it (``str(param.value).strip()``), not part of a name.
+SAME_TEXT = frozenset({"strip", "lstrip", "rstrip"})
+
 
 def _safe(result: Any) -> bool:
     if isinstance(result, (str, bytes)):

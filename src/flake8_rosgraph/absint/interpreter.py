@@ -21,6 +21,7 @@ from .program import Module
 from .rows import LoopRows, rows_of
 from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Obj, Record,
                      Seq, Value, atoms, const, join_all)
+from .attrflow import AttributeFlow, join_remembered
 from .calls import CallSemantics
 from .containers import with_item
 from .expressions import ExpressionSemantics
@@ -36,7 +37,7 @@ _IMPURE_IN_TESTS = (ast.Call, ast.NamedExpr, ast.Await, ast.Yield, ast.YieldFrom
                     ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
-class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts):
+class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceFacts, AttributeFlow):
     #: Statement type → its ``s_`` method (``None``: nothing to do), looked up once per type.
     _executors: dict[type, Callable | None] = {}
 
@@ -328,6 +329,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             if isinstance(target, ast.Name) and self.frame.func is not None \
                     and target.id in self.frame.func.locals:
                 self.frame.env.pop(target.id, None)
+                self.forget_variable(target.id)
+            elif isinstance(target, ast.Attribute):
+                self.forget_attributes()
 
     def s_Import(self, op: ast.Import) -> None:
         for alias in op.names:
@@ -403,6 +407,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             holder = self.eval(target.value)
             self.store_attr(holder, target.attr, value)
             self.record_attribute_store(target, holder, value)
+            self.remember_attribute(target, holder, value)
             if isinstance(target.value, (ast.Name, ast.Attribute)) \
                     and any(isinstance(a, Record) for a in holder):
                 # Records (library value objects such as a QoS profile) are updated in place
@@ -456,6 +461,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 self.an.write(("c", owner, name), value)
         else:
             frame.env[name] = value
+            self.forget_variable(name)
             if name in func.cellvars:
                 self.an.write(("c", func.fid, name), value)
 
@@ -584,4 +590,5 @@ def _join_env(old: Env, new: Env, widen: bool) -> Env:
             out[name] = value
         elif prev is not value:  # a value joined or widened with itself is itself
             out[name] = prev.widen(value) if widen else prev.join(value)
+    join_remembered(out, old, new)
     return out

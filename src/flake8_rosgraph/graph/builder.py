@@ -45,12 +45,22 @@ QOS_NUMBERS = ("depth",)
 QOS_DURATIONS = ("deadline", "lifespan", "liveliness_lease_duration")
 
 
+_NONE = Const.of(None)
+
+
 def interface_types(value: Value) -> list[str | None]:
     """``std_msgs.msg.String`` (or ``"std_msgs/msg/String"``) → ``["std_msgs/msg/String"]``;
     one type per possibility (``Twist if stamped else TwistStamped``), ``[None]`` when any
-    possibility is not an interface the graph can name."""
+    possibility is not an interface the graph can name.
+
+    ``None`` or a workspace class beside a type is the fallback of an import that failed
+    (``except ImportError: Twist = None``, or a stand-in class with the message's constants):
+    no entity exists with it — rclpy refuses a type without type support — so the entity
+    that exists has the type."""
     found = set()
     for atom in value:
+        if atom == _NONE or isinstance(atom, ClassAtom):
+            continue
         if isinstance(atom, Extern):
             match = _INTERFACE.match(atom.qualname)
             if match:

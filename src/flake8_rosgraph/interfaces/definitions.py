@@ -151,6 +151,13 @@ def parse_message(text: str, key: str) -> MessageDef:
 def parse_interface(text: str, package: str, kind: str, name: str) -> list[MessageDef]:
     """Every structure one interface file defines: one for a ``.msg``, two for a ``.srv``, three
     for an ``.action`` (a missing part is empty)."""
+    return [parse_message("\n".join(chunk), f"{package}/{kind}/{name}{suffix}")
+            for chunk, suffix in zip(split_parts(text, package, kind, name), PARTS[kind])]
+
+
+def split_parts(text: str, package: str, kind: str, name: str) -> list[list[str]]:
+    """The lines of each part of an interface file, in :data:`PARTS` order (``---`` separates
+    a request from its response; a missing part is empty)."""
     suffixes = PARTS[kind]
     chunks: list[list[str]] = [[]]
     for line in text.splitlines():
@@ -160,6 +167,4 @@ def parse_interface(text: str, package: str, kind: str, name: str) -> list[Messa
             chunks[-1].append(line)
     if len(chunks) > len(suffixes):
         raise InterfaceError(f"{package}/{kind}/{name}: more than {len(suffixes)} parts")
-    chunks += [[] for _ in range(len(suffixes) - len(chunks))]
-    return [parse_message("\n".join(chunk), f"{package}/{kind}/{name}{suffix}")
-            for chunk, suffix in zip(chunks, suffixes)]
+    return chunks + [[] for _ in range(len(suffixes) - len(chunks))]
