@@ -447,7 +447,9 @@ class UsageBuilder:
                         and not nodes & self.shared_sites:
                     items.append(((name, next(iter(nodes))), _loc(site)))
         first: dict[tuple[str, str], Location] = {}
-        for key, location in sorted(items, key=lambda i: i[1]):
+        # One place declaring a name twice is a call of a union of callees (``tree.setup()`` on
+        # one of two tree classes, or one function in two contexts): one of them runs, not both.
+        for key, location in sorted(set(items), key=lambda i: (i[1], i[0])):
             if key in first:
                 out.setdefault(location, Redeclaration(
                     location, key[0], self.node_labels.get(key[1], "?"), first[key]))
