@@ -191,3 +191,78 @@ def test_a_namespace_pushed_under_an_unknown_condition_makes_the_names_unknown(t
         "DeclareLaunchArgument('use_namespace', default_value='False')",
         "DeclareLaunchArgument('use_namespace')"))
     assert findings(root, ["ROS001", "ROS003"]) == []
+
+
+# -- a launch name given to an executable renames a node it only may create ----------------------
+TREE_HELPER = """
+    import rclpy
+    from std_msgs.msg import String
+
+
+    class BehaviourTree:
+        def setup(self, node=None):
+            {creation}
+            self.status_pub = self.node.create_publisher(String, '~/status', 10)
+"""
+
+SCENARIO_RUNNER = """
+    import rclpy
+    from rclpy.node import Node
+
+    from scenario.tree import BehaviourTree
+
+
+    class ScenarioRunner:
+        def __init__(self):
+            self.node = rclpy.create_node('scenario_runner')
+            self.tree = BehaviourTree()
+
+        def run(self):
+            self.tree.setup(node=self.node)
+            rclpy.spin(self.node)
+
+
+    def main():
+        rclpy.init()
+        ScenarioRunner().run()
+"""
+
+SCENARIO_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='scenario', executable='runner', name='scenario_execution'),
+        ])
+"""
+
+
+def scenario_workspace(root: Path, creation: str) -> Path:
+    return write(root, {
+        "scenario/package.xml": PACKAGE_XML.format(name="scenario", build="ament_python"),
+        "scenario/setup.py": setup_py("scenario", "'runner = scenario.runner:main'"),
+        "scenario/scenario/__init__.py": "",
+        "scenario/scenario/tree.py": TREE_HELPER.format(creation=creation),
+        "scenario/scenario/runner.py": SCENARIO_RUNNER,
+        "scenario/launch/scenario.launch.py": SCENARIO_LAUNCH,
+    })
+
+
+def test_a_launch_name_does_not_clash_with_a_node_created_only_on_some_path(tmp_path: Path) -> None:
+    """scenario_execution: the tree's ``setup(node=None)`` creates a node of its own only when
+    none is passed (``if node:``); the runner passes its node, which is true (rclpy's classes
+    define no ``__bool__``), so the executable creates one node and the launch name renames it."""
+    root = scenario_workspace(tmp_path, "if node:\n                self.node = node\n            else:\n"
+                                        "                self.node = rclpy.create_node('tree')")
+    assert findings(root, ["ROS007"]) == []
+
+
+def test_a_launch_name_given_to_an_executable_of_two_nodes_is_still_reported(tmp_path: Path) -> None:
+    """The twin: the tree always creates its own node, so both run as ``/scenario_execution``."""
+    root = scenario_workspace(tmp_path, "self.node = rclpy.create_node('tree')")
+    reported = findings(root, ["ROS007"])
+    assert [(code, path, line) for code, path, line, _ in reported] == [
+        ("ROS007", "scenario/launch/scenario.launch.py", 7)]
+    assert "gives its name to every node the executable creates" in reported[0][3]
