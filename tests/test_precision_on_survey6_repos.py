@@ -266,3 +266,87 @@ def test_a_launch_name_given_to_an_executable_of_two_nodes_is_still_reported(tmp
     assert [(code, path, line) for code, path, line, _ in reported] == [
         ("ROS007", "scenario/launch/scenario.launch.py", 7)]
     assert "gives its name to every node the executable creates" in reported[0][3]
+
+
+# -- two test modules never run together ----------------------------------------------------------
+LATENCY_TEST = """
+    import unittest
+
+    import rclpy
+    from std_msgs.msg import String
+
+
+    class TestLatency(unittest.TestCase):
+        def setUp(self):
+            rclpy.init()
+            self.node = rclpy.create_node('test_node')
+            self.publisher = self.node.create_publisher(String, '/probe', 10)
+            self.node.create_timer(0.5, self.tick)
+
+        def tick(self):
+            self.publisher.publish(String(data='ping'))
+
+        def tearDown(self):
+            self.node.destroy_node()
+            rclpy.shutdown()
+
+        def test_latency(self):
+            rclpy.spin_once(self.node, timeout_sec=1.0)
+"""
+
+SERVICE_TEST = """
+    import unittest
+
+    import rclpy
+    from std_msgs.msg import {probe_type}
+
+
+    class TestCounter(unittest.TestCase):
+        def setUp(self):
+            rclpy.init()
+            self.received = []
+            self.node = rclpy.create_node('test_node')
+            self.node.create_subscription({probe_type}, '/probe', self.received.append, 10)
+
+        def tearDown(self):
+            self.node.destroy_node()
+            rclpy.shutdown()
+
+        def test_counts(self):
+            rclpy.spin_once(self.node, timeout_sec=1.0)
+            self.assertTrue(self.received)
+"""
+
+
+def checker_workspace(root: Path, probe_type: str, one_module: bool = False) -> Path:
+    files = {
+        "checker/package.xml": PACKAGE_XML.format(name="checker", build="ament_python"),
+        "checker/setup.py": setup_py("checker", ""),
+        "checker/checker/__init__.py": "",
+        "checker/test/test_latency.py": LATENCY_TEST,
+        "checker/test/test_counter.py": SERVICE_TEST.format(probe_type=probe_type),
+    }
+    if one_module:
+        # both test classes in one module: a probe and the node it feeds in one run
+        counter = SERVICE_TEST.format(probe_type=probe_type).replace("'test_node'", "'counter_node'")
+        files["checker/test/test_latency.py"] = LATENCY_TEST.replace(
+            "from std_msgs.msg import String", f"from std_msgs.msg import String, {probe_type}") \
+            + counter[counter.index("    class TestCounter"):]
+        del files["checker/test/test_counter.py"]
+    return write(root, files)
+
+
+def test_two_test_modules_sharing_a_topic_name_are_not_one_system(tmp_path: Path) -> None:
+    """scenario_execution: three test modules each create ``test_node`` and use ``/bla``, as
+    ``String``, ``Int32`` and ``Bool``: each module's tests run on their own, so neither the
+    types (ROS004) nor the node names (ROS007) clash."""
+    root = checker_workspace(tmp_path, "Int32")
+    assert findings(root, ["ROS004", "ROS007"]) == []
+
+
+def test_a_type_mismatch_within_one_test_module_is_still_reported(tmp_path: Path) -> None:
+    """The twin: the probe and the node it feeds are in one module and disagree on the type."""
+    root = checker_workspace(tmp_path, "Int32", one_module=True)
+    reported = findings(root, ["ROS004", "ROS007"])
+    assert [(code, path) for code, path, _, _ in reported] == [("ROS004", "checker/test/test_latency.py")]
+    assert "subscribed as 'std_msgs/msg/Int32' but published as 'std_msgs/msg/String'" in reported[0][3]

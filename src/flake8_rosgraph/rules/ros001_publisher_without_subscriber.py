@@ -63,7 +63,8 @@ class PublisherWithoutSubscriber(AbsenceRule):
     modules, nodes started by launch files there) form their own system:
     they connect with the fixtures and the production nodes of the package
     they test only, so a test's end never makes a production end look
-    connected. Ends created by a shared helper function sit at the helper's
+    connected; the nodes of two test modules in a test folder never run
+    together. Ends created by a shared helper function sit at the helper's
     creation call, where several count as alternatives of one site. When
     flake8 checks only some files (pre-commit), a near-name finding whose
     end is not checked is shown at the checked near end.
