@@ -350,3 +350,72 @@ def test_a_type_mismatch_within_one_test_module_is_still_reported(tmp_path: Path
     reported = findings(root, ["ROS004", "ROS007"])
     assert [(code, path) for code, path, _, _ in reported] == [("ROS004", "checker/test/test_latency.py")]
     assert "subscribed as 'std_msgs/msg/Int32' but published as 'std_msgs/msg/String'" in reported[0][3]
+
+
+# -- code for both ROS versions writes the ROS 1 spelling of a field on its ROS 1 branch -------------
+COMPAT = """
+    import os
+
+    ROS_VERSION = int(os.environ.get('ROS_VERSION', 0))
+"""
+
+CAMERA = """
+    import math
+
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import CameraInfo
+
+    from sim_bridge.compat import ROS_VERSION
+
+
+    class CameraInfoPublisher(Node):
+        def __init__(self):
+            super().__init__('camera_info_publisher')
+            self.pub = self.create_publisher(CameraInfo, 'camera_info', 10)
+            self.create_timer(0.1, self.publish_info)
+
+        def publish_info(self):
+            info = CameraInfo()
+            info.width, info.height = 800, 600
+            fx = info.width / (2.0 * math.tan(math.radians(90.0) / 2.0))
+            {projection}
+            self.pub.publish(info)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(CameraInfoPublisher())
+"""
+
+BOTH_VERSIONS = """if ROS_VERSION == 1:
+                info.K = [fx, 0.0, 400.0, 0.0, fx, 300.0, 0.0, 0.0, 1.0]
+            else:
+                info.k = [fx, 0.0, 400.0, 0.0, fx, 300.0, 0.0, 0.0, 1.0]"""
+
+
+def bridge_workspace(root: Path, projection: str) -> Path:
+    return write(root, {
+        "sim_bridge/package.xml": PACKAGE_XML.format(name="sim_bridge", build="ament_python"),
+        "sim_bridge/setup.py": setup_py("sim_bridge", "'camera = sim_bridge.camera:main'"),
+        "sim_bridge/sim_bridge/__init__.py": "",
+        "sim_bridge/sim_bridge/compat.py": COMPAT,
+        "sim_bridge/sim_bridge/camera.py": CAMERA.format(projection=projection),
+    })
+
+
+def test_the_ros1_branch_of_code_for_both_versions_is_not_judged(tmp_path: Path) -> None:
+    """carla ros-bridge: ``if ROS_VERSION == 1: camera_info.K = …`` beside ``camera_info.k``
+    on the ROS 2 branch; the ROS 1 names were reported as missing fields."""
+    root = bridge_workspace(tmp_path, BOTH_VERSIONS)
+    assert findings(root, ["ROS107"]) == []
+
+
+def test_a_ros1_field_name_in_ros2_code_is_still_reported(tmp_path: Path) -> None:
+    """The twin: code ported from ROS 1 keeps the capital ``K``, an AttributeError under ROS 2."""
+    root = bridge_workspace(tmp_path, "info.K = [fx, 0.0, 400.0, 0.0, fx, 300.0, 0.0, 0.0, 1.0]")
+    reported = findings(root, ["ROS107"])
+    assert [(code, path, line) for code, path, line, _ in reported] == [
+        ("ROS107", "sim_bridge/sim_bridge/camera.py", 20)]
+    assert reported[0][3] == ("sensor_msgs/msg/CameraInfo has no field 'K' "
+                              "(its ROS 1 name: the ROS 2 field is 'k')")
