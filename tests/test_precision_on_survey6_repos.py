@@ -419,3 +419,53 @@ def test_a_ros1_field_name_in_ros2_code_is_still_reported(tmp_path: Path) -> Non
         ("ROS107", "sim_bridge/sim_bridge/camera.py", 20)]
     assert reported[0][3] == ("sensor_msgs/msg/CameraInfo has no field 'K' "
                               "(its ROS 1 name: the ROS 2 field is 'k')")
+
+
+# -- a script's main guard runs its statements in order ------------------------------------------
+PATROL_SCRIPT = """
+    import rclpy
+    from geometry_msgs.msg import Twist
+    from rclpy.node import Node
+
+
+    class Patrol(Node):
+        def __init__(self):
+            super().__init__('patrol')
+            self.cmd_pub = self.create_publisher(Twist, 'cmd_vel', 10)
+
+
+    if __name__ == '__main__':
+        {first}
+        {second}
+        rclpy.spin(patrol)
+"""
+
+
+def patrol_workspace(root: Path, first: str, second: str) -> Path:
+    return write(root, {
+        "patrol/package.xml": PACKAGE_XML.format(name="patrol", build="ament_python"),
+        "patrol/setup.py": setup_py("patrol", ""),
+        "patrol/scripts/patrol_node.py": PATROL_SCRIPT.format(first=first, second=second),
+    })
+
+
+def test_a_node_created_before_init_in_a_main_guard_is_reported(tmp_path: Path) -> None:
+    """Seeded in turtlebot3_behavior_demos' autonomy script: the statements of a main guard
+    were all "conditional" (under an ``if``), so none ordered another and the swap was missed."""
+    root = patrol_workspace(tmp_path, "patrol = Patrol()", "rclpy.init()")
+    reported = findings(root, ["ROS105"])
+    assert [(code, path, line) for code, path, line, _ in reported] == [
+        ("ROS105", "patrol/scripts/patrol_node.py", 13)]
+    assert "node created before rclpy.init()" in reported[0][3]
+
+
+def test_init_before_the_node_in_a_main_guard_is_quiet(tmp_path: Path) -> None:
+    """The twin as written in the repository: init first."""
+    root = patrol_workspace(tmp_path, "rclpy.init()", "patrol = Patrol()")
+    assert findings(root, ["ROS105"]) == []
+
+
+def test_a_node_created_on_one_branch_of_a_main_guard_is_not_ordered(tmp_path: Path) -> None:
+    """A creation inside a choice (``Patrol() if fast else None``) may not run: not judged."""
+    root = patrol_workspace(tmp_path, "patrol = Patrol() if len(__file__) > 3 else None", "rclpy.init()")
+    assert findings(root, ["ROS105"]) == []
