@@ -469,3 +469,66 @@ def test_a_node_created_on_one_branch_of_a_main_guard_is_not_ordered(tmp_path: P
     """A creation inside a choice (``Patrol() if fast else None``) may not run: not judged."""
     root = patrol_workspace(tmp_path, "patrol = Patrol() if len(__file__) > 3 else None", "rclpy.init()")
     assert findings(root, ["ROS105"]) == []
+
+
+# -- a tf2 lookup returns a TransformStamped ---------------------------------------------------------
+TF_TO_POSE = """
+    import rclpy
+    from geometry_msgs.msg import PoseStamped
+    from rclpy.node import Node
+    from rclpy.time import Time
+    from tf2_ros import TransformException
+    from tf2_ros.buffer import Buffer
+    from tf2_ros.transform_listener import TransformListener
+
+
+    class TfToPose(Node):
+        def __init__(self):
+            super().__init__('tf_to_pose')
+            self.tf_buffer = Buffer()
+            self.tf_listener = TransformListener(self.tf_buffer, self)
+            self.pose_pub = self.create_publisher(PoseStamped, 'robot_pose', 10)
+            self.create_timer(0.1, self.on_timer)
+
+        def on_timer(self):
+            try:
+                t = self.tf_buffer.lookup_transform('map', 'base_link', Time())
+            except TransformException:
+                return
+            pose = PoseStamped()
+            pose.header = t.header
+            pose.pose.position.x = t.transform.translation.x
+            pose.pose.orientation = t.transform.rotation
+            self.pose_pub.publish({published})
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(TfToPose())
+"""
+
+
+def tf_pose_workspace(root: Path, published: str) -> Path:
+    return write(root, {
+        "tf_tools/package.xml": PACKAGE_XML.format(name="tf_tools", build="ament_python"),
+        "tf_tools/setup.py": setup_py("tf_tools", "'tf_to_pose = tf_tools.tf_to_pose:main'"),
+        "tf_tools/tf_tools/__init__.py": "",
+        "tf_tools/tf_tools/tf_to_pose.py": TF_TO_POSE.format(published=published),
+    })
+
+
+def test_publishing_the_looked_up_transform_on_a_pose_publisher_is_reported(tmp_path: Path) -> None:
+    """Seeded in scenario_execution's tf_to_pose_publisher: ``publish(t)`` instead of
+    ``publish(pose)``; ``lookup_transform`` returned an unknown value, so nothing was judged."""
+    root = tf_pose_workspace(tmp_path, "t")
+    reported = findings(root, ["ROS104", "ROS107"])
+    assert [(code, path, line) for code, path, line, _ in reported] == [
+        ("ROS104", "tf_tools/tf_tools/tf_to_pose.py", 27)]
+    assert ("publishes a geometry_msgs/msg/TransformStamped message on a publisher of "
+            "geometry_msgs/msg/PoseStamped") in reported[0][3]
+
+
+def test_the_pose_built_from_the_transform_is_quiet(tmp_path: Path) -> None:
+    """The twin as written: the fields read from the transform exist, the pose is published."""
+    root = tf_pose_workspace(tmp_path, "pose")
+    assert findings(root, ["ROS104", "ROS107"]) == []
