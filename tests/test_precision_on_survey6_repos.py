@@ -6,6 +6,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from flake8_rosgraph.findings import Finding
+from flake8_rosgraph.graph.model import Location
+from flake8_rosgraph.rules import merge_same_text
+
 from test_recall_mechanisms import findings
 from test_workspace_discovery import PACKAGE_XML, setup_py, write
 
@@ -532,3 +536,19 @@ def test_the_pose_built_from_the_transform_is_quiet(tmp_path: Path) -> None:
     """The twin as written: the fields read from the transform exist, the pose is published."""
     root = tf_pose_workspace(tmp_path, "pose")
     assert findings(root, ["ROS104", "ROS107"]) == []
+
+
+# -- one end told with and without its hint is one finding --------------------------------------------
+def test_a_finding_told_again_with_a_hint_is_one_finding() -> None:
+    """aws-deepracer-offroad (seeded typo ``vehicle_stat``): the client as written and as the
+    launch file starts it both lack a server; only the launched one's near name is known, and
+    the line was printed twice, once without the hint."""
+    here, server = Location("web/web/node.py", 123, 30), Location("ctrl/src/ctrl_node.cpp", 84, 5)
+    bare = "service '/ctrl_pkg/vehicle_stat' has no server"
+    hinted = bare + "; did you mean '/ctrl_pkg/vehicle_state' (served at ctrl/src/ctrl_node.cpp:84)?"
+    merged = merge_same_text([Finding(here, "ROS008", bare), Finding(here, "ROS008", hinted, ((server, "server"),))])
+    assert merged == [Finding(here, "ROS008", hinted, ((server, "server"),))]
+    # another code, or another place, keeps its own line
+    elsewhere = Location("web/web/node.py", 130, 30)
+    assert len(merge_same_text([Finding(elsewhere, "ROS008", bare), Finding(here, "ROS008", hinted)])) == 2
+    assert len(merge_same_text([Finding(here, "ROS001", bare), Finding(here, "ROS008", hinted)])) == 2
