@@ -552,3 +552,41 @@ def test_a_finding_told_again_with_a_hint_is_one_finding() -> None:
     elsewhere = Location("web/web/node.py", 130, 30)
     assert len(merge_same_text([Finding(elsewhere, "ROS008", bare), Finding(here, "ROS008", hinted)])) == 2
     assert len(merge_same_text([Finding(here, "ROS001", bare), Finding(here, "ROS008", hinted)])) == 2
+
+
+# -- a scoped remap under a condition that does not hold is not applied ------------------------------
+SIM_LAUNCH = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument, GroupAction
+    from launch.conditions import UnlessCondition
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node, SetRemap
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            DeclareLaunchArgument('real_robot', default_value='{real_robot}'),
+            GroupAction([
+                SetRemap(src='/odm', dst='/sim/odom',
+                         condition=UnlessCondition(LaunchConfiguration('real_robot'))),
+                Node(package='rover', executable='tracker'),
+            ]),
+        ])
+"""
+
+
+def test_a_remap_set_under_a_false_condition_is_not_applied(tmp_path: Path) -> None:
+    """``SetRemap(…, condition=UnlessCondition(real_robot))`` with ``real_robot`` true by
+    default remaps nothing, so its misspelt source is not judged in that configuration."""
+    root = rover_workspace(tmp_path, "False")
+    write(root, {"rover/launch/sim.launch.py": SIM_LAUNCH.format(real_robot="1")})
+    assert findings(root, ["ROS202"]) == []
+
+
+def test_a_remap_set_under_a_true_condition_is_still_judged(tmp_path: Path) -> None:
+    """The twin: in simulation the remap applies, and ``/odm`` matches no name the tracker uses."""
+    root = rover_workspace(tmp_path, "False")
+    write(root, {"rover/launch/sim.launch.py": SIM_LAUNCH.format(real_robot="0")})
+    reported = findings(root, ["ROS202"])
+    assert [(code, path, line) for code, path, line, _ in reported] == [("ROS202", "rover/launch/sim.launch.py", 12)]
+    assert "did you mean '/odom'" in reported[0][3]
