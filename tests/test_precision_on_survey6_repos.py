@@ -14,6 +14,19 @@ from test_recall_mechanisms import findings
 from test_workspace_discovery import PACKAGE_XML, setup_py, write
 
 
+def ament_python(name: str, scripts: str = "") -> dict[str, str]:
+    """The files every ament_python package of these workspaces has: package.xml, setup.py
+    with these ``console_scripts`` entries, and the module folder's ``__init__.py``."""
+    return {f"{name}/package.xml": PACKAGE_XML.format(name=name, build="ament_python"),
+            f"{name}/setup.py": setup_py(name, scripts),
+            f"{name}/{name}/__init__.py": ""}
+
+
+def sites(reported: list[tuple[str, str, int, str]]) -> list[tuple[str, str, int]]:
+    """``(code, path, line)`` of each finding."""
+    return [(code, path, line) for code, path, line, _ in reported]
+
+
 # -- one call of one of two tree classes declares a parameter once ----------------------------------
 TREES = """
     class PlainTree:
@@ -51,9 +64,7 @@ RUNNER = """
 
 def runner_workspace(root: Path, setup: str) -> Path:
     return write(root, {
-        "runner/package.xml": PACKAGE_XML.format(name="runner", build="ament_python"),
-        "runner/setup.py": setup_py("runner", "'runner = runner.main:main'"),
-        "runner/runner/__init__.py": "",
+        **ament_python("runner", "'runner = runner.main:main'"),
         "runner/runner/trees.py": TREES,
         "runner/runner/main.py": RUNNER.format(setup=setup),
     })
@@ -71,7 +82,7 @@ def test_the_tree_set_up_twice_still_declares_again(tmp_path: Path) -> None:
     """The twin: two calls in a row declare the names twice."""
     root = runner_workspace(tmp_path, "self.tree.setup(self)\n            self.tree.setup(self)")
     reported = findings(root, ["ROS102"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [
+    assert sites(reported) == [
         ("ROS102", "runner/runner/main.py", 14)]
     assert "is declared again on node '/runner'" in reported[0][3]
 
@@ -158,9 +169,7 @@ ROVER_LAUNCH_XML = """
 def rover_workspace(root: Path, use_namespace: str, launch: str = ROVER_LAUNCH_PY) -> Path:
     name = "rover.launch.py" if launch is ROVER_LAUNCH_PY else "rover.launch.xml"
     return write(root, {
-        "rover/package.xml": PACKAGE_XML.format(name="rover", build="ament_python"),
-        "rover/setup.py": setup_py("rover", "'odometry = rover.odometry:main', 'tracker = rover.tracker:main'"),
-        "rover/rover/__init__.py": "",
+        **ament_python("rover", "'odometry = rover.odometry:main', 'tracker = rover.tracker:main'"),
         "rover/rover/odometry.py": ODOMETRY,
         "rover/rover/tracker.py": TRACKER,
         f"rover/launch/{name}": launch.format(use_namespace=use_namespace),
@@ -181,7 +190,7 @@ def test_a_namespace_pushed_under_a_true_condition_is_still_a_slip(tmp_path: Pat
     for launch in (ROVER_LAUNCH_PY, ROVER_LAUNCH_XML):
         root = rover_workspace(tmp_path / str(id(launch)), "true", launch)
         reported = findings(root, ["ROS001", "ROS003"])
-        assert [(code, path, line) for code, path, line, _ in reported] == [
+        assert sites(reported) == [
             ("ROS001", "rover/rover/odometry.py", 10), ("ROS003", "rover/rover/tracker.py", 10)]
         assert "did you mean '/odom'" in reported[0][3]
 
@@ -245,9 +254,7 @@ SCENARIO_LAUNCH = """
 
 def scenario_workspace(root: Path, creation: str) -> Path:
     return write(root, {
-        "scenario/package.xml": PACKAGE_XML.format(name="scenario", build="ament_python"),
-        "scenario/setup.py": setup_py("scenario", "'runner = scenario.runner:main'"),
-        "scenario/scenario/__init__.py": "",
+        **ament_python("scenario", "'runner = scenario.runner:main'"),
         "scenario/scenario/tree.py": TREE_HELPER.format(creation=creation),
         "scenario/scenario/runner.py": SCENARIO_RUNNER,
         "scenario/launch/scenario.launch.py": SCENARIO_LAUNCH,
@@ -267,7 +274,7 @@ def test_a_launch_name_given_to_an_executable_of_two_nodes_is_still_reported(tmp
     """The twin: the tree always creates its own node, so both run as ``/scenario_execution``."""
     root = scenario_workspace(tmp_path, "self.node = rclpy.create_node('tree')")
     reported = findings(root, ["ROS007"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [
+    assert sites(reported) == [
         ("ROS007", "scenario/launch/scenario.launch.py", 7)]
     assert "gives its name to every node the executable creates" in reported[0][3]
 
@@ -324,9 +331,7 @@ SERVICE_TEST = """
 
 def checker_workspace(root: Path, probe_type: str, one_module: bool = False) -> Path:
     files = {
-        "checker/package.xml": PACKAGE_XML.format(name="checker", build="ament_python"),
-        "checker/setup.py": setup_py("checker", ""),
-        "checker/checker/__init__.py": "",
+        **ament_python("checker"),
         "checker/test/test_latency.py": LATENCY_TEST,
         "checker/test/test_counter.py": SERVICE_TEST.format(probe_type=probe_type),
     }
@@ -352,7 +357,7 @@ def test_a_type_mismatch_within_one_test_module_is_still_reported(tmp_path: Path
     """The twin: the probe and the node it feeds are in one module and disagree on the type."""
     root = checker_workspace(tmp_path, "Int32", one_module=True)
     reported = findings(root, ["ROS004", "ROS007"])
-    assert [(code, path) for code, path, _, _ in reported] == [("ROS004", "checker/test/test_latency.py")]
+    assert [(code, path) for code, path, _ in sites(reported)] == [("ROS004", "checker/test/test_latency.py")]
     assert "subscribed as 'std_msgs/msg/Int32' but published as 'std_msgs/msg/String'" in reported[0][3]
 
 
@@ -400,9 +405,7 @@ BOTH_VERSIONS = """if ROS_VERSION == 1:
 
 def bridge_workspace(root: Path, projection: str) -> Path:
     return write(root, {
-        "sim_bridge/package.xml": PACKAGE_XML.format(name="sim_bridge", build="ament_python"),
-        "sim_bridge/setup.py": setup_py("sim_bridge", "'camera = sim_bridge.camera:main'"),
-        "sim_bridge/sim_bridge/__init__.py": "",
+        **ament_python("sim_bridge", "'camera = sim_bridge.camera:main'"),
         "sim_bridge/sim_bridge/compat.py": COMPAT,
         "sim_bridge/sim_bridge/camera.py": CAMERA.format(projection=projection),
     })
@@ -419,7 +422,7 @@ def test_a_ros1_field_name_in_ros2_code_is_still_reported(tmp_path: Path) -> Non
     """The twin: code ported from ROS 1 keeps the capital ``K``, an AttributeError under ROS 2."""
     root = bridge_workspace(tmp_path, "info.K = [fx, 0.0, 400.0, 0.0, fx, 300.0, 0.0, 0.0, 1.0]")
     reported = findings(root, ["ROS107"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [
+    assert sites(reported) == [
         ("ROS107", "sim_bridge/sim_bridge/camera.py", 20)]
     assert reported[0][3] == ("sensor_msgs/msg/CameraInfo has no field 'K' "
                               "(its ROS 1 name: the ROS 2 field is 'k')")
@@ -447,8 +450,7 @@ PATROL_SCRIPT = """
 
 def patrol_workspace(root: Path, first: str, second: str) -> Path:
     return write(root, {
-        "patrol/package.xml": PACKAGE_XML.format(name="patrol", build="ament_python"),
-        "patrol/setup.py": setup_py("patrol", ""),
+        **ament_python("patrol"),
         "patrol/scripts/patrol_node.py": PATROL_SCRIPT.format(first=first, second=second),
     })
 
@@ -458,7 +460,7 @@ def test_a_node_created_before_init_in_a_main_guard_is_reported(tmp_path: Path) 
     were all "conditional" (under an ``if``), so none ordered another and the swap was missed."""
     root = patrol_workspace(tmp_path, "patrol = Patrol()", "rclpy.init()")
     reported = findings(root, ["ROS105"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [
+    assert sites(reported) == [
         ("ROS105", "patrol/scripts/patrol_node.py", 13)]
     assert "node created before rclpy.init()" in reported[0][3]
 
@@ -514,9 +516,7 @@ TF_TO_POSE = """
 
 def tf_pose_workspace(root: Path, published: str) -> Path:
     return write(root, {
-        "tf_tools/package.xml": PACKAGE_XML.format(name="tf_tools", build="ament_python"),
-        "tf_tools/setup.py": setup_py("tf_tools", "'tf_to_pose = tf_tools.tf_to_pose:main'"),
-        "tf_tools/tf_tools/__init__.py": "",
+        **ament_python("tf_tools", "'tf_to_pose = tf_tools.tf_to_pose:main'"),
         "tf_tools/tf_tools/tf_to_pose.py": TF_TO_POSE.format(published=published),
     })
 
@@ -526,7 +526,7 @@ def test_publishing_the_looked_up_transform_on_a_pose_publisher_is_reported(tmp_
     ``publish(pose)``; ``lookup_transform`` returned an unknown value, so nothing was judged."""
     root = tf_pose_workspace(tmp_path, "t")
     reported = findings(root, ["ROS104", "ROS107"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [
+    assert sites(reported) == [
         ("ROS104", "tf_tools/tf_tools/tf_to_pose.py", 27)]
     assert ("publishes a geometry_msgs/msg/TransformStamped message on a publisher of "
             "geometry_msgs/msg/PoseStamped") in reported[0][3]
@@ -588,5 +588,5 @@ def test_a_remap_set_under_a_true_condition_is_still_judged(tmp_path: Path) -> N
     root = rover_workspace(tmp_path, "False")
     write(root, {"rover/launch/sim.launch.py": SIM_LAUNCH.format(real_robot="0")})
     reported = findings(root, ["ROS202"])
-    assert [(code, path, line) for code, path, line, _ in reported] == [("ROS202", "rover/launch/sim.launch.py", 12)]
+    assert sites(reported) == [("ROS202", "rover/launch/sim.launch.py", 12)]
     assert "did you mean '/odom'" in reported[0][3]
