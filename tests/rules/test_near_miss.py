@@ -54,6 +54,30 @@ def test_a_dropped_namespace_token():
         "ROS003 topic '/robot/chatter' has no publisher; did you mean '/chatter' (published at demo/talker.py:2)?"]
 
 
+def detector(topic):
+    """A QR detector publishing its delta under its package's namespace, and a navigator
+    (fed by the workspace through /ack) that subscribes to ``topic``."""
+    delta = "deepracer_interfaces_pkg/msg/DetectionDeltaMsg"
+    return graph(node("qr_detection_node", pub("/qr_detection_pkg/delta", type=delta), pub("/ack"),
+                      namespace="/qr_detection_pkg", path="qr/qr_node.py"),
+                 node("navigation_node", sub(topic, type=delta), sub("/ack"), path="nav/nav_node.py"))
+
+
+def test_a_namespace_token_with_one_word_dropped_is_a_near_miss():
+    """Seeded in aws-deepracer-offroad: ``/qr_detection`` for the package namespace
+    ``/qr_detection_pkg``: a whole ``_pkg`` is no typo, but the token is that word short."""
+    assert messages(detector("/qr_detection/delta"), select=["ROS003"]) == [
+        "ROS003 topic '/qr_detection/delta' has no publisher; did you mean '/qr_detection_pkg/delta' "
+        "(published at qr/qr_node.py:2)?"]
+
+
+@pytest.mark.parametrize("topic", ["/qr_reader/delta", "/detection_pkg_qr/delta", "/qr_detection_pkg/delta_x"])
+def test_another_word_in_a_namespace_token_or_the_leaf_is_no_near_miss(topic):
+    """A word replaced (``qr_reader``), words moved, or a word added to the last token (that
+    is another name, ``/odom`` and ``/odom_raw``) are not the one-word slip."""
+    assert "did you mean" not in " ".join(messages(detector(topic), select=["ROS003"]))
+
+
 def test_same_leaf_in_another_namespace_is_a_family_not_a_slip():
     g = graph(node("left", pub("/left/image"), pub("/ack"), path="cam/left.py"),
               node("viewer", sub("/right/image"), sub("/ack"), path="cam/viewer.py"))

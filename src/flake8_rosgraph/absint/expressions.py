@@ -458,13 +458,20 @@ class ExpressionSemantics:
                 seen.add(bool(atom.value))
             elif isinstance(atom, Seq) and not may_be_filled_elsewhere(atom):
                 seen.add(bool(atom.items))
-            elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)):
+            elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)) \
+                    or _rclpy_instance(atom):
                 seen.add(True)
             else:
                 return None
             if len(seen) > 1:
                 return None
         return seen.pop()
+
+
+def _rclpy_instance(atom) -> bool:
+    """An instance of an rclpy class (a node, a publisher, a future): none of them defines
+    ``__bool__`` or ``__len__``, so each is true (``node or rclpy.create_node('tree')``)."""
+    return isinstance(atom, Obj) and isinstance(atom.cls, Extern) and atom.cls.qualname.startswith("rclpy.")
 
 
 def _only(value: Value, kind: type):

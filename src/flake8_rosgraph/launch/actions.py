@@ -103,6 +103,8 @@ class GroupAction:
 class PushNamespace:
     location: Location
     namespace: Subst
+    #: ``PushRosNamespace(condition=IfCondition(use_namespace), …)``: pushed only when it holds.
+    condition: Condition | None = None
 
 
 @dataclass
@@ -110,6 +112,7 @@ class SetRemap:
     location: Location
     source: Subst
     target: Subst
+    condition: Condition | None = None
 
 
 @dataclass
@@ -117,6 +120,7 @@ class SetParameter:
     location: Location
     name: str
     value: Any
+    condition: Condition | None = None
 
 
 @dataclass

@@ -86,6 +86,10 @@ def _readable(expression: Subst) -> bool:
     return True
 
 
+#: What launch's condition expressions may evaluate to (``launch.conditions.evaluate_condition_expression``).
+_TRUTH = {"true": True, "1": True, "false": False, "0": False}
+
+
 def prefix_namespace(base: str | None, ns: str | None) -> str | None:
     """launch_ros ``prefix_namespace`` followed by ``make_namespace_absolute``."""
     if base is not None and ns is not None:
@@ -184,6 +188,16 @@ class Executor:
             raise Unresolved(subst.reason)
         raise Unresolved(f"unsupported substitution {type(subst).__name__}")
 
+    def holds(self, condition: Condition | None, scope: Scope) -> bool | None:
+        """Whether an action's ``condition`` holds with the launch arguments the scope has, as
+        launch evaluates ``IfCondition``/``UnlessCondition``/``if=``: ``true``/``1`` or
+        ``false``/``0`` in any case; ``None`` when the analysis cannot tell."""
+        if condition is None:
+            return True
+        value = self.value_or_none(condition.expression, scope)
+        truth = _TRUTH.get(value.lower()) if value is not None else None
+        return None if truth is None else truth != condition.negate
+
     def value_or_none(self, subst: Subst, scope: Scope) -> str | None:
         try:
             return self.value(subst, scope)
@@ -226,11 +240,18 @@ class Executor:
                 inner.guards = scope.guarded(action.condition)
             self.run(action.actions, inner, system, stack)
         elif isinstance(action, PushNamespace):
+            holds = self.holds(action.condition, scope)
+            if holds is None:
+                # pushed or not: every name the following nodes resolve may be either
+                scope.namespace_unknown = "a namespace pushed under a condition the analysis cannot evaluate"
+                return
             try:
-                pushed = self.value(action.namespace, scope)
-                scope.namespace = prefix_namespace(scope.namespace, pushed)
+                if holds:
+                    scope.namespace = prefix_namespace(scope.namespace, self.value(action.namespace, scope))
             except Unresolved as exc:
                 scope.namespace_unknown = str(exc)
+        elif isinstance(action, (SetRemap, SetParameter)) and self.holds(action.condition, scope) is False:
+            return
         elif isinstance(action, SetRemap):
             try:
                 scope.remaps.append(Remap(self.value(action.source, scope),

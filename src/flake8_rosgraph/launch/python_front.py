@@ -183,12 +183,13 @@ class PythonFront:
                     actions.extend(self.entity_list(then, at))
             return [GroupAction(at, actions, False, Condition(Unknown("when the event comes")))]
         if short == "PushRosNamespace":
-            return [PushNamespace(at, self.subst(self.field(obj, "namespace")))]
+            return [PushNamespace(at, self.subst(self.field(obj, "namespace")), self.condition(obj))]
         if short == "SetRemap":
-            return [SetRemap(at, self.subst(self.field(obj, "src")), self.subst(self.field(obj, "dst")))]
+            return [SetRemap(at, self.subst(self.field(obj, "src")), self.subst(self.field(obj, "dst")),
+                             self.condition(obj))]
         if short == "SetParameter":
             name = self.field(obj, "name").strings()
-            return [SetParameter(at, name[0], self.param_value(self.field(obj, "value")))
+            return [SetParameter(at, name[0], self.param_value(self.field(obj, "value")), self.condition(obj))
                     if name and len(name) == 1 else Unsupported(at, "SetParameter with an unknown name", starts_nodes=False)]
         if short in ("DeclareLaunchArgument", "SetLaunchConfiguration"):
             names = self.field(obj, "name").strings()

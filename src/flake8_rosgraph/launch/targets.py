@@ -29,6 +29,7 @@ from typing import Mapping, Sequence
 from ..absint.engine import Analysis, Effect
 from ..absint.values import ClassAtom, Obj
 from ..graph.builder import _class_name
+from ..graph.main_guard import is_main_guard
 from ..graph.model import Location
 from .model import ExecutableRef
 from .packages import Executable, PackageIndex
@@ -232,15 +233,6 @@ class EntryReach:
         return sorted(sites), sorted(open_sites), sorted(classes, key=repr), frozenset(ends)
 
 
-def _is_main_guard(test: ast.expr) -> bool:
-    """``__name__ == '__main__'`` (either way round)."""
-    if not isinstance(test, ast.Compare) or len(test.ops) != 1 or not isinstance(test.ops[0], ast.Eq):
-        return False
-    sides = [test.left, test.comparators[0]]
-    return any(isinstance(x, ast.Name) and x.id == "__name__" for x in sides) and \
-        any(isinstance(x, ast.Constant) and x.value == "__main__" for x in sides)
-
-
 def _called_names(nodes: list[ast.stmt]) -> set[str]:
     """Plain names called in ``nodes``, outside function and class bodies."""
     found: set[str] = set()
@@ -258,7 +250,7 @@ def _called_names(nodes: list[ast.stmt]) -> set[str]:
 def _main_guard_spans(tree: ast.Module) -> tuple[tuple[int, int], ...]:
     """The first and last lines of the body of each top-level ``__main__`` guard."""
     return tuple((stmt.body[0].lineno, stmt.body[-1].end_lineno or stmt.body[-1].lineno)
-                 for stmt in tree.body if isinstance(stmt, ast.If) and _is_main_guard(stmt.test))
+                 for stmt in tree.body if isinstance(stmt, ast.If) and is_main_guard(stmt.test))
 
 
 def _main_guard_calls(tree: ast.Module) -> frozenset[str]:
@@ -266,7 +258,7 @@ def _main_guard_calls(tree: ast.Module) -> frozenset[str]:
     guarded: list[ast.stmt] = []
     rest: list[ast.stmt] = []
     for stmt in tree.body:
-        if isinstance(stmt, ast.If) and _is_main_guard(stmt.test):
+        if isinstance(stmt, ast.If) and is_main_guard(stmt.test):
             guarded.extend(stmt.body)
             rest.extend(stmt.orelse)
         else:

@@ -128,12 +128,13 @@ class XmlFront:
             inner.extend(a for child in el.children for a in self.action(child))
             return [GroupAction(at, inner, scoped, _condition(el))]
         if tag == "push_ros_namespace":
-            return [PushNamespace(at, parse_substitutions(el.attrs.get("namespace", el.attrs.get("ns", ""))))]
+            return [PushNamespace(at, parse_substitutions(el.attrs.get("namespace", el.attrs.get("ns", ""))),
+                                  _condition(el))]
         if tag == "set_remap":
             return [SetRemap(at, parse_substitutions(el.attrs.get("from", "")),
-                             parse_substitutions(el.attrs.get("to", "")))]
+                             parse_substitutions(el.attrs.get("to", "")), _condition(el))]
         if tag == "set_parameter":
-            return [SetParameter(at, el.attrs.get("name", ""), typed(el.attrs.get("value", "")))]
+            return [SetParameter(at, el.attrs.get("name", ""), typed(el.attrs.get("value", "")), _condition(el))]
         if tag == "arg":
             return [DeclareArgument(at, el.attrs.get("name", ""), _subst(el.attrs.get("default")))]
         if tag == "let":

@@ -85,14 +85,15 @@ class YamlFront:
             inner.extend(self.actions(_items(attrs.get("children"))))
             return [GroupAction(at, inner, scoped, _condition(attrs))]
         if tag == "push_ros_namespace":
-            return [PushNamespace(at, text.get("namespace") or text.get("ns") or parse_substitutions(""))]
+            return [PushNamespace(at, text.get("namespace") or text.get("ns") or parse_substitutions(""),
+                                  _condition(attrs))]
         if tag == "set_remap":
             return [SetRemap(at, text.get("from") or parse_substitutions(""),
-                             text.get("to") or parse_substitutions(""))]
+                             text.get("to") or parse_substitutions(""), _condition(attrs))]
         if tag == "set_parameter":
             value = attrs.get("value")
             return [SetParameter(at, str(attrs["name"].value) if "name" in attrs else "",
-                                 None if value is None else _param_value(value))]
+                                 None if value is None else _param_value(value), _condition(attrs))]
         if tag == "arg":
             return [DeclareArgument(at, str(attrs["name"].value) if "name" in attrs else "",
                                     text.get("default"))]

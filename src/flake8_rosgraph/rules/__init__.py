@@ -97,13 +97,26 @@ def merge_same_text(findings: Iterable[Finding]) -> list[Finding]:
     Two findings a user reads as one line are one problem told twice: a callback that two
     timers run reaches the same ``time.sleep()`` twice, a helper sleeps at two lines behind one
     call — each path has its own related locations, but the line printed is the same.
+    A message that another one at the same place continues (``… has no server`` beside ``… has
+    no server; did you mean '/ctrl_pkg/vehicle_state'?``: the end as written and as a launch file
+    starts it, where only the latter's partner is near) is that finding told without its hint.
     """
+    ordered = sorted(findings)
+    messages: dict[tuple[Location, str], list[str]] = {}
+    for finding in ordered:
+        messages.setdefault((finding.location, finding.code), []).append(finding.message)
     related: dict[tuple, dict[tuple[Location, str], None]] = {}
-    for finding in sorted(findings):
-        related.setdefault((finding.location, finding.code, finding.message), {}).update(
-            dict.fromkeys(finding.related))
+    for finding in ordered:
+        told = _told_in_full(finding.message, messages[(finding.location, finding.code)])
+        related.setdefault((finding.location, finding.code, told), {}).update(dict.fromkeys(finding.related))
     return [Finding(location, code, message, tuple(others))
             for (location, code, message), others in sorted(related.items(), key=lambda kv: kv[0])]
+
+
+def _told_in_full(message: str, at_place: list[str]) -> str:
+    """The longest of the messages of one place and code that continues ``message``."""
+    longer = [m for m in at_place if m.startswith(message + "; ")]
+    return max(longer, key=lambda m: (len(m), m)) if longer else message
 
 
 __all__ = ["RULES", "Finding", "Rule", "RuleConfig", "rule_by_code", "run_rules", "selected_rules"]

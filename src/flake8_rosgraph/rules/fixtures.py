@@ -16,6 +16,13 @@ path prefix of the package it tests: the folder that holds the test folder
 (``pkg/test/test_x.py`` -> ``pkg/``) or the test module's folder. Fixtures see
 the fixtures of their scope and the production nodes under it; production
 nodes see production nodes only.
+
+A test module under a test folder (``pkg/test/test_x.py``) is one *test run*:
+pytest runs its tests on their own, each creating its nodes and destroying them
+again, so the nodes two such modules create never run together. Their ends only
+meet the fixtures of no test run (helpers, nodes a launch test starts) and the
+product, whatever names and types the two tests happen to share (``/bla`` as
+``String`` in one, as ``Int32`` in the other).
 """
 from __future__ import annotations
 
@@ -51,6 +58,19 @@ def node_scope(node: RosNode) -> str | None:
     if scope is None and node.launch is not None and isinstance(node.launch.get("file"), str):
         scope = fixture_scope(node.launch["file"])
     return scope
+
+
+@lru_cache(maxsize=4096)
+def _test_module(path: str) -> bool:
+    parts = PurePosixPath(path).parts
+    return bool(parts) and any(part in TEST_FOLDERS for part in parts[:-1]) \
+        and _is_test_module(parts[-1]) and parts[-1].split(".", 1)[0] != "conftest"
+
+
+def test_run(node: RosNode) -> str | None:
+    """The test module a node is created in when no launch file starts it, ``None`` for
+    any other node (see the module docstring)."""
+    return node.location.path if node.launch is None and _test_module(node.location.path) else None
 
 
 def sees(own_scope: str | None, other_scope: str | None, other_path: str) -> bool:

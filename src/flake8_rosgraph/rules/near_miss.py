@@ -9,7 +9,10 @@ when they are the same name
 * resolved differently: the written name of the dangling end, taken as
   private (``~/x``), relative (``x``) or absolute (``/x``) in its node, gives
   the other name;
-* with one namespace token dropped or added (``/robot/scan`` vs ``/scan``);
+* with one namespace token dropped or added (``/robot/scan`` vs ``/scan``), or one
+  ``_``-separated word dropped or added at either end of a namespace token
+  (``/qr_detection/delta`` vs ``/qr_detection_pkg/delta``: a package's namespace written
+  without its suffix);
 * up to case and the plural of the last word (``/Scan``, ``/goal_poses``);
 * with one token misspelt (edit distance with transpositions): for a token of
   at most :data:`SHORT_TOKEN` characters only a swap of two neighbours or one
@@ -79,6 +82,20 @@ def folded(name: str) -> set[str]:
     head, _, last = name.lower().rpartition("/")
     *words, word = last.split("_")
     return {f"{head}/{'_'.join([*words, singular])}" for singular in _singulars(word)}
+
+
+def _word_keys(tokens: Sequence[str], shortened: bool) -> Iterable[tuple]:
+    """Keys of a name under its namespace tokens, one key per namespace token: that token as
+    it is or (``shortened``) without its first or last ``_``-separated word, with the position
+    and the other tokens. Two names sharing a key differ in one namespace token by one word."""
+    for i, token in enumerate(tokens[:-1]):
+        context = (i, tuple(tokens[:i]), tuple(tokens[i + 1:]))
+        words = token.split("_")
+        if not shortened:
+            yield (*context, token)
+        elif len(words) > 1 and all(words):
+            yield (*context, "_".join(words[1:]))
+            yield (*context, "_".join(words[:-1]))
 
 
 def _without_one_token(tokens: Sequence[str]) -> Iterable[str]:
@@ -204,6 +221,8 @@ class NearMissFinder:
         self._peers = peers
         self._folded: dict[str, list[str]] = defaultdict(list)
         self._one_token_more: dict[str, list[str]] = defaultdict(list)
+        self._one_word_more: dict[tuple, list[str]] = defaultdict(list)
+        self._one_word_less: dict[tuple, list[str]] = defaultdict(list)
         self._spelling: dict[int, list[str]] = defaultdict(list)
         for name in sorted(peers):
             tokens = _tokens(name)
@@ -211,6 +230,10 @@ class NearMissFinder:
                 self._folded[key].append(name)
             for shorter in _without_one_token(tokens):
                 self._one_token_more[shorter].append(name)
+            for key in _word_keys(tokens, shortened=True):
+                self._one_word_more[key].append(name)
+            for key in _word_keys(tokens, shortened=False):
+                self._one_word_less[key].append(name)
             for key in set(_spelling_keys(tokens)):
                 self._spelling[key].append(name)
 
@@ -235,6 +258,12 @@ class NearMissFinder:
             add(other, (NAMESPACE_TOKEN, 1))
         for shorter in _without_one_token(tokens):
             add(shorter, (NAMESPACE_TOKEN, 1))
+        for key in _word_keys(tokens, shortened=False):
+            for other in self._one_word_more.get(key, ()):
+                add(other, (NAMESPACE_TOKEN, 1))
+        for key in _word_keys(tokens, shortened=True):
+            for other in self._one_word_less.get(key, ()):
+                add(other, (NAMESPACE_TOKEN, 1))
         seen: set[str] = set()
         for key in set(_spelling_keys(tokens)):
             for other in self._spelling.get(key, ()):

@@ -13,8 +13,10 @@ class PublisherWithoutSubscriber(AbsenceRule):
     connected or not, with a compatible type. A *near name* — a typo (swapped,
     missing, doubled or changed characters, case, singular/plural of the last
     word), the written name resolved as private (`~/x`), relative or absolute
-    in its node, or one namespace token more or less — is named in the
-    message ("did you mean ...?") with its location as related location.
+    in its node, one namespace token more or less, or one `_`-word more or
+    less at an end of a namespace token (`/qr_detection` for `/qr_detection_pkg`)
+    — is named in the message ("did you mean ...?") with its location as
+    related location.
 
     ## Why is this bad?
     Messages nobody receives are wasted work, and far more often the symptom of
@@ -63,7 +65,8 @@ class PublisherWithoutSubscriber(AbsenceRule):
     modules, nodes started by launch files there) form their own system:
     they connect with the fixtures and the production nodes of the package
     they test only, so a test's end never makes a production end look
-    connected. Ends created by a shared helper function sit at the helper's
+    connected; the nodes of two test modules in a test folder never run
+    together. Ends created by a shared helper function sit at the helper's
     creation call, where several count as alternatives of one site. When
     flake8 checks only some files (pre-commit), a near-name finding whose
     end is not checked is shown at the checked near end.

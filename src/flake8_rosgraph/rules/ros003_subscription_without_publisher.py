@@ -13,8 +13,10 @@ class SubscriptionWithoutPublisher(AbsenceRule):
     connected or not, with a compatible type. A *near name* — a typo (swapped,
     missing, doubled or changed characters, case, singular/plural of the last
     word), the written name resolved as private (`~/x`), relative or absolute
-    in its node, or one namespace token more or less — is named in the
-    message ("did you mean ...?") with its location as related location.
+    in its node, one namespace token more or less, or one `_`-word more or
+    less at an end of a namespace token (`/qr_detection` for `/qr_detection_pkg`)
+    — is named in the message ("did you mean ...?") with its location as
+    related location.
 
     ## Why is this bad?
     The callback never runs. The node waits forever for data that does not

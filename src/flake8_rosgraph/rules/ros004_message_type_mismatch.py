@@ -33,7 +33,8 @@ class MessageTypeMismatch(Rule):
     roles (publishers and subscriptions of that type): those are separate
     working systems, such as the same demo written in C++ and in Python. Test
     fixtures (nodes in `test/` folders and `test_*.py` modules) are compared only
-    with the fixtures of their own tests and the production ends of the package
+    with the fixtures of their own tests (two test modules in a test folder
+    never run together) and the production ends of the package
     they test, never with other packages; there the product's ends give the
     type the fixture's ends must have. The
     finding is reported
@@ -76,9 +77,10 @@ class MessageTypeMismatch(Rule):
                 # (the fixtures of their scope, the production ends of the package under test),
                 # reported at the fixture's own ends only (see :mod:`.fixtures`).
                 yield from self._mismatches([ep for ep in typed if ep.scope is None], producer)
-                for scope in sorted({ep.scope for ep in typed if ep.scope is not None}):
-                    own = [ep for ep in typed if ep.scope == scope]
-                    seen = [ep for ep in typed if ep.scope == scope or own[0].sees(ep)]
+                # (two test modules never run together: each is judged on its own)
+                for scope, run in sorted({(ep.scope, ep.run or "") for ep in typed if ep.scope is not None}):
+                    own = [ep for ep in typed if ep.scope == scope and (ep.run or "") == run]
+                    seen = [ep for ep in typed if own[0].sees(ep)]
                     # A test is judged against the product it tests: the product's ends give the type.
                     product = [ep for ep in seen if ep.scope is None]
                     yield from (f for f in self._mismatches(seen, producer, product or seen)

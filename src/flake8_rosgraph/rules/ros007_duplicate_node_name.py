@@ -47,7 +47,8 @@ class DuplicateNodeName(Rule):
     `minimal_publisher` in three styles), so they are not compared. Test
     files are not one process: a pytest module that creates a node of the
     same name in each test function is quiet, unless its nodes talk to each
-    other or one launch test starts them. Two classes in two modules that one
+    other or one launch test starts them; the nodes of two test modules in a
+    test folder never talk to each other. Two classes in two modules that one
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
     creation site (`Node('a' if x else 'b')`) and nodes created by one call

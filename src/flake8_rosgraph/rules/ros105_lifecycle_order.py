@@ -31,7 +31,8 @@ class LifecycleOrder(Rule):
 
     ## Known problems
     Only calls that run on every path of the same body (outside `try`) order
-    it; calls spread over several functions, or code that uses its own
+    it (the plain statements of a script's `if __name__ == '__main__':` count
+    as its module body's); calls spread over several functions, or code that uses its own
     `Context`, are not judged. Using a node after shutdown other than creating
     one (spinning, publishing) is not reported.
 

@@ -9,6 +9,7 @@ from ..graph.model import RosGraph
 from ..interfaces.catalogue import Catalogue, display_name, message_key
 from ..interfaces.definitions import Field, MessageDef
 from ..interfaces.field_values import rejection, without_none_alternative
+from ..interfaces.ros1_names import ros2_name
 from .base import Finding, Rule, RuleConfig
 
 
@@ -90,6 +91,10 @@ class MessageField(Rule):
     that attribute (`hasattr(msg, 'header')`, `getattr(msg, 'header', None)`)
     is not judged. A keyword the class does not have
     is ignored silently when field checks are off, and is still reported.
+    A field ROS 2 renamed (`info.K` of `CameraInfo`, now `k`) is reported
+    with its ROS 2 name, except in a file that also uses the ROS 2 name on
+    that message: code for both versions (`if ROS_VERSION == 1:`) whose ROS 1
+    branch never runs under ROS 2.
     Test code (fixtures, pytest and unittest test classes) is judged like the
     product: a missing field or a rejected value raises in a test just the same,
     and the test then fails for a reason it does not test.
@@ -128,26 +133,31 @@ class MessageField(Rule):
                 yield Finding(built.location, self.code,
                               f"{display_name(key)} takes keyword arguments only, not "
                               f"{built.positional} positional")
+        # Every field path each file writes or reads, by message (see :func:`_both_versions`).
+        used = frozenset((f.location.path, f.message, f.path) for f in (*facts.stores, *facts.reads))
         stores: dict[tuple, list[FieldStore]] = {}
         for store in merge_contexts(facts.stores):
             stores.setdefault((store.location, store.path, store.keyword), []).append(store)
         for group in stores.values():
-            yield from _unanimous([self._store_problem(catalogue, store) for store in group])
+            yield from _unanimous([self._store_problem(catalogue, store, used) for store in group])
         reads: dict[tuple, list[FieldRead]] = {}
         for read in facts.reads:
             reads.setdefault((read.location, read.path), []).append(read)
         for group in reads.values():
-            yield from _unanimous([self._read_problem(catalogue, read) for read in group])
+            yield from _unanimous([self._read_problem(catalogue, read, used) for read in group])
 
-    def _read_problem(self, catalogue: Catalogue, read: FieldRead) -> Finding | None:
+    def _read_problem(self, catalogue: Catalogue, read: FieldRead, used: frozenset) -> Finding | None:
         root = catalogue.get(message_key(read.message))
         resolved = resolve(catalogue, root, read.path) if root is not None else None
         if resolved is None or resolved[1] is not None or _class_attribute(resolved[0], resolved[2]):
             return None
         owner, _, name = resolved
-        return Finding(read.location, self.code, f"{display_name(owner.key)} has no field '{name}'")
+        if _both_versions(owner, name, read, used):
+            return None
+        return Finding(read.location, self.code,
+                       f"{display_name(owner.key)} has no field '{name}'{_ros2_hint(owner, name)}")
 
-    def _store_problem(self, catalogue: Catalogue, store: FieldStore) -> Finding | None:
+    def _store_problem(self, catalogue: Catalogue, store: FieldStore, used: frozenset) -> Finding | None:
         root = catalogue.get(message_key(store.message))
         if root is None or any(step.startswith("_") for step in store.path):
             return None
@@ -157,8 +167,10 @@ class MessageField(Rule):
         owner, found, name = resolved
         where = display_name(owner.key)
         if found is None:
+            if _both_versions(owner, name, store, used):
+                return None
             what = " (it is a constant)" if name in owner.constants else \
-                " (constructor keyword)" if store.keyword else ""
+                " (constructor keyword)" if store.keyword else _ros2_hint(owner, name)
             return Finding(store.location, self.code, f"{where} has no field '{name}'{what}")
         shapes = without_none_alternative(list(store.value or ()))
         verdicts = [(shape, rejection(found.type, shape)) for shape in shapes]
@@ -169,6 +181,19 @@ class MessageField(Rule):
         return Finding(store.location, self.code,
                        f"{where} field '{name}' ({found.type.spelled()}) rejects {why}"
                        f"{_hint(found.type.base, shape)}")
+
+
+def _both_versions(owner: MessageDef, name: str, fact: FieldStore | FieldRead, used: frozenset) -> bool:
+    """Whether ``name`` is a ROS 1 field of ``owner`` (``CameraInfo.K``) whose ROS 2 name (``k``)
+    the fact's file also uses on that message: code written for both versions (``if ROS_VERSION
+    == 1: info.K = … else: info.k = …``), whose ROS 1 branch never runs under ROS 2."""
+    spelling = ros2_name(owner.key, name)
+    return spelling is not None and (fact.location.path, fact.message, fact.path[:-1] + (spelling,)) in used
+
+
+def _ros2_hint(owner: MessageDef, name: str) -> str:
+    spelling = ros2_name(owner.key, name)
+    return "" if spelling is None else f" (its ROS 1 name: the ROS 2 field is '{spelling}')"
 
 
 def _unanimous(problems: list[Finding | None]) -> list[Finding]:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from ..graph.model import NAMED_KINDS, PEER_KIND, Entity, RosGraph, RosNode
 from .exempt import ExemptNames
-from .fixtures import node_scope, sees
+from .fixtures import node_scope, sees, test_run
 from .shared import once
 
 #: What is known of an endpoint whose name is not: its message type and how its name ends.
@@ -37,9 +37,17 @@ class Endpoint:
         A production end belongs to the package under test when its node or the end itself is
         created there: a package's code may create its ends on a node another package's class
         makes (a framework's shared node, a library base class)."""
+        own_run, other_run = self.run, other.run
+        if own_run is not None and other_run is not None and own_run != other_run:
+            return False  # two test modules never run together
         return sees(self.scope, other.scope, other.node.location.path) or (
             self.scope is not None and other.scope is None
             and sees(self.scope, None, other.entity.location.path))
+
+    @property
+    def run(self) -> str | None:
+        """The test module whose run the end belongs to (:func:`.fixtures.test_run`)."""
+        return test_run(self.node)
 
     @property
     def sort_key(self) -> tuple:
@@ -84,8 +92,9 @@ class EndpointIndex:
     #: type, name suffix, node)``. The unknown is one configuration of one launch system, so it
     #: fills only gaps near it (:func:`near`), never the whole workspace's.
     launch_unresolved: dict[str, tuple[tuple["str | None", "str | None", RosNode], ...]] = field(default_factory=dict)
-    #: :meth:`same_role_nodes` answers by (kind, name, scope): every end of one scope sees the same users.
-    _role_counts: dict[tuple[str, str, str | None], int] = field(default_factory=dict, repr=False)
+    #: :meth:`same_role_nodes` answers by (kind, name, scope, test run): every end of one
+    #: scope and run sees the same users.
+    _role_counts: dict[tuple[str, str, str | None, str | None], int] = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, graph: RosGraph) -> EndpointIndex:
@@ -163,7 +172,7 @@ class EndpointIndex:
 
         Nodes of one fully qualified name count once (see :func:`_node_key`).
         """
-        key = (endpoint.entity.kind, endpoint.entity.name or "", endpoint.scope)
+        key = (endpoint.entity.kind, endpoint.entity.name or "", endpoint.scope, endpoint.run)
         if key not in self._role_counts:
             users = self.using(key[0], key[1])
             self._role_counts[key] = len({_node_key(ep.node) for ep in users if endpoint.sees(ep)})
@@ -202,15 +211,16 @@ class EndpointIndex:
         for (k, name), endpoints in self.by_name.items():
             if k != kind or name in exempt:
                 continue
-            peer_nodes_by_scope: dict[str | None, set[str | int]] = {}
+            peer_nodes_by_scope: dict[tuple[str | None, str | None], set[str | int]] = {}
             for ep in endpoints:
                 if ep.entity.partial:
                     continue
-                # Ends of one scope see the same peers: compute them once per scope.
-                if ep.scope not in peer_nodes_by_scope:
-                    peer_nodes_by_scope[ep.scope] = {_node_key(p.node) for p in self.peers(ep)
-                                                     if not p.entity.partial}
-                peer_nodes = peer_nodes_by_scope[ep.scope]
+                # Ends of one scope and test run see the same peers: compute them once for each.
+                seen_from = (ep.scope, ep.run)
+                if seen_from not in peer_nodes_by_scope:
+                    peer_nodes_by_scope[seen_from] = {_node_key(p.node) for p in self.peers(ep)
+                                                      if not p.entity.partial}
+                peer_nodes = peer_nodes_by_scope[seen_from]
                 if len(peer_nodes) > 1 or (peer_nodes and _node_key(ep.node) not in peer_nodes):
                     wired.add(id(ep.node))
         return frozenset(wired)
