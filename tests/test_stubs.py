@@ -273,6 +273,8 @@ GOOD = '\n[constants."ok.FINE"]\nvalue = 1\n'
 BROKEN: dict[str, tuple[str, str]] = {
     # case: (stub text, text the single error message must contain after "broken.toml: ")
     "unknown top-level key": ("function = 1\n", "unknown top-level key 'function'"),
+    "true_instances not a list of names": ("true_instances = 'acme'\n",
+                                           "true_instances: expected a list of module names"),
     "unknown function key": ('[functions."acme.make_pub"]\nparam = "node"\n',
                              "functions.'acme.make_pub': unknown key 'param'"),
     "unknown class key": ('[classes."acme.Base"]\ncolour = "blue"\n',
@@ -660,3 +662,11 @@ def test_without_the_user_stub_the_wrapper_library_is_invisible():
 def test_every_shipped_stub_is_in_the_table_of_shipped_models():
     table = (Path(__file__).parent.parent / "docs" / "stubs.md").read_text(encoding="utf-8")
     assert [name for name in SHIPPED_NAMES if f"`{name}`" not in table] == []
+
+
+def test_instances_of_a_library_that_says_so_are_true():
+    model = load_library([("acme.toml", 'true_instances = ["acme_robot"]\n')])
+    assert model.errors == []
+    assert model.instance_is_true("acme_robot.base.RobotBase")
+    assert not model.instance_is_true("acme_robotics.Arm")  # another library sharing the prefix
+    assert load_library(builtin_stub_texts()).instance_is_true("rclpy.node.Node")

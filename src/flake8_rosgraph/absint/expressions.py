@@ -442,8 +442,7 @@ class ExpressionSemantics:
                 return TOP
         return self.element_of(value, out)
 
-    @staticmethod
-    def truth(value: Value, by_default: bool = True) -> bool | None:
+    def truth(self, value: Value, by_default: bool = True) -> bool | None:
         """Python truthiness if the value decides it, else ``None``.
 
         A *soft* value (an overridable default) decides value choices
@@ -459,19 +458,14 @@ class ExpressionSemantics:
             elif isinstance(atom, Seq) and not may_be_filled_elsewhere(atom):
                 seen.add(bool(atom.items))
             elif isinstance(atom, (FuncAtom, BoundMethod, ClassAtom, ModuleAtom, ExternBound)) \
-                    or _rclpy_instance(atom):
+                    or (isinstance(atom, Obj) and isinstance(atom.cls, Extern)
+                        and self.lib.instance_is_true(atom.cls.qualname)):
                 seen.add(True)
             else:
                 return None
             if len(seen) > 1:
                 return None
         return seen.pop()
-
-
-def _rclpy_instance(atom) -> bool:
-    """An instance of an rclpy class (a node, a publisher, a future): none of them defines
-    ``__bool__`` or ``__len__``, so each is true (``node or rclpy.create_node('tree')``)."""
-    return isinstance(atom, Obj) and isinstance(atom.cls, Extern) and atom.cls.qualname.startswith("rclpy.")
 
 
 def _only(value: Value, kind: type):

@@ -234,6 +234,9 @@ class LibraryModel:
     classes: dict[str, ClassModel] = field(default_factory=dict)
     constants: dict[str, Value] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
+    #: Libraries (module prefixes) none of whose classes defines ``__bool__`` or ``__len__``:
+    #: every instance of theirs is true (``node or create_node('tree')`` keeps ``node``).
+    true_instances: set[str] = field(default_factory=set)
     errors: list[str] = field(default_factory=list)
     #: ``(__module__, __name__)`` of a library class the stubs do not list but whose names
     #: follow a generator's convention (set by the caller that knows the convention);
@@ -243,6 +246,11 @@ class LibraryModel:
     _canonical: dict[str, str] = field(default_factory=dict, repr=False)
     _mro: dict[str, list[str]] = field(default_factory=dict, repr=False)
     _stand_ins: dict[str, StandIn] | None = field(default=None, repr=False)
+
+    def instance_is_true(self, cls_qualname: str) -> bool:
+        """Whether every instance of the library class ``cls_qualname`` is true."""
+        return any(cls_qualname == prefix or cls_qualname.startswith(prefix + ".")
+                   for prefix in self.true_instances)
 
     def canonical(self, qualname: str) -> str:
         """Follow aliases (longest dotted prefix first): ``rclpy.lifecycle.Node`` → ``…LifecycleNode``."""
@@ -343,7 +351,7 @@ class LibraryModel:
 _FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "blocking", "blocks_for"}
 _CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods", "stand_in_for_unresolved",
                "entry_args", "registered_as"}
-_TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta"}
+_TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta", "true_instances"}
 
 
 def _table(raw: Any, where: str) -> dict:
@@ -515,6 +523,11 @@ def load_stub_text(text: str, source: str, model: LibraryModel) -> None:
                 model.errors.append(str(exc))
             except RecursionError:
                 model.errors.append(f"{where}: nested too deeply")
+    true_instances = data.get("true_instances", [])
+    if isinstance(true_instances, list) and all(isinstance(p, str) for p in true_instances):
+        model.true_instances.update(true_instances)
+    else:
+        model.errors.append(f"{source}: true_instances: expected a list of module names")
     aliases = data.get("aliases", {})
     if isinstance(aliases, dict):
         for name, target in aliases.items():
