@@ -590,3 +590,56 @@ def test_a_remap_set_under_a_true_condition_is_still_judged(tmp_path: Path) -> N
     reported = findings(root, ["ROS202"])
     assert sites(reported) == [("ROS202", "rover/launch/sim.launch.py", 12)]
     assert "did you mean '/odom'" in reported[0][3]
+
+
+# -- two test modules never run together, but one spells the product's topic for the other ---------
+MODEL_FEED_TEST = """
+    import rclpy
+    from std_msgs.msg import Float64MultiArray
+
+
+    def test_model_is_consumed():
+        rclpy.init()
+        node = rclpy.create_node('test_model_feed')
+        pub = node.create_publisher(Float64MultiArray, '/arm_model', 10)
+        pub.publish(Float64MultiArray())
+        node.destroy_node()
+        rclpy.shutdown()
+"""
+
+MODEL_RATE_TEST = """
+    import rclpy
+    from std_msgs.msg import Float64MultiArray
+
+
+    def test_model_rate():
+        rclpy.init()
+        node = rclpy.create_node('test_model_rate')
+        received = []
+        node.create_subscription(Float64MultiArray, {topic!r}, received.append, 10)
+        rclpy.spin_once(node, timeout_sec=1.0)
+        node.destroy_node()
+        rclpy.shutdown()
+"""
+
+
+def two_test_modules(root: Path, topic: str) -> Path:
+    return write(root, {
+        **ament_python("arm_model"),
+        "arm_model/test/test_feed.py": MODEL_FEED_TEST,
+        "arm_model/test/test_rate.py": MODEL_RATE_TEST.format(topic=topic),
+    })
+
+
+def test_a_misspelt_topic_is_named_by_another_test_module_of_the_package(tmp_path: Path) -> None:
+    """adl-ros2: a test subscribes ``/arm_modle``; another test module of the package publishes
+    ``/arm_model``. They never run together, but the other module spells the name this one means."""
+    reported = findings(two_test_modules(tmp_path, "/arm_modle"), ["ROS003"])
+    assert [(code, path) for code, path, _ in sites(reported)] == [("ROS003", "arm_model/test/test_rate.py")]
+    assert "did you mean '/arm_model' (published at arm_model/test/test_feed.py:8)" in reported[0][3]
+
+
+def test_a_name_one_namespace_token_away_in_another_test_module_is_no_near_name(tmp_path: Path) -> None:
+    """py_trees_ros: ``/monitor/arm_model`` in one test module and ``/arm_model`` in another are
+    two tests' own topics, not a slip."""
+    assert findings(two_test_modules(tmp_path, "/monitor/arm_model"), ["ROS001", "ROS003"]) == []

@@ -66,7 +66,8 @@ class PublisherWithoutSubscriber(AbsenceRule):
     they connect with the fixtures and the production nodes of the package
     they test only, so a test's end never makes a production end look
     connected; the nodes of two test modules in a test folder never run
-    together. Ends created by a shared helper function sit at the helper's
+    together (a misspelling is still named from the other module, which spells
+    the name meant). Ends created by a shared helper function sit at the helper's
     creation call, where several count as alternatives of one site. When
     flake8 checks only some files (pre-commit), a near-name finding whose
     end is not checked is shown at the checked near end.

@@ -40,6 +40,12 @@ class Endpoint:
         own_run, other_run = self.run, other.run
         if own_run is not None and other_run is not None and own_run != other_run:
             return False  # two test modules never run together
+        return self.spells_like(other)
+
+    def spells_like(self, other: Endpoint) -> bool:
+        """Whether ``other``'s name shows how this end's name is meant to be spelt: an end it
+        can run with, or one of another test module of its scope (two tests of one package
+        write the product's topic alike, though they never run together)."""
         return sees(self.scope, other.scope, other.node.location.path) or (
             self.scope is not None and other.scope is None
             and sees(self.scope, None, other.entity.location.path))
