@@ -274,6 +274,18 @@ def test_a_stripped_setting_is_still_the_setting_a_launch_file_sets(tmp_path: Pa
         14: {("/voice/activity_raw", None)}}
 
 
+def test_a_stripped_default_with_spaces_is_the_stripped_text(tmp_path: Path) -> None:
+    """The twin: a default written with spaces around it (``' voice/activity '``) is a setting
+    whose text ``strip()`` changes: the name is the stripped text, not the default as written."""
+    from flake8_rosgraph.analysis import build_graph
+    from test_parameter_named_entities import named
+
+    node = STRIPPED_NODE.replace("'output_topic', 'voice/activity'", "'output_topic', ' voice/activity '")
+    graph = build_graph(write(tmp_path / "ws", package("voice", "'activity = voice.activity:main'",
+                                                       {"activity": node})))
+    assert {name for name, _ in named(graph, "/voice_activity")[13]} == {"/voice/activity"}
+
+
 # -- an attribute read back where the function just stored it ---------------------------------------
 CAMERA_NODE = """
     import sys

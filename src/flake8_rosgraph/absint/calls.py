@@ -14,6 +14,7 @@ import string
 from dataclasses import dataclass
 from typing import Iterator
 
+from .attrflow import is_remembered
 from .callgraph import CallSite
 from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
@@ -812,7 +813,7 @@ class CallSemantics:
         if frame.func is None or frame.cls is not None:
             return TOP
         bound = sorted((name, value) for name, value in frame.env.items()
-                       if not name.startswith(("$", ".")) and not value.is_bottom)
+                       if not name.startswith("$") and not is_remembered(name) and not value.is_bottom)
         for _, value in bound:
             self.escape_value(value)
         if len(bound) > MAX_DICT_ITEMS:

@@ -381,9 +381,9 @@ class ExpressionSemantics:
             return self.super_value(node)
         if isinstance(node.func, ast.Attribute):
             holder = self.eval(node.func.value)
-            if node.func.attr in SAME_TEXT and not node.args and not node.keywords \
-                    and holder.origin is not None and all(isinstance(c, str) for c in holder.consts() or ()):
-                return holder  # still the setting, named by its origin
+            if node.func.attr in SAME_TEXT and not node.args and not node.keywords and holder.origin is not None \
+                    and all(isinstance(c, str) and getattr(c, node.func.attr)() == c for c in holder.consts() or ()):
+                return holder  # still the setting, named by its origin (its known texts unchanged)
             func = self.attribute_of(node.func, holder)
         else:
             func = self.eval(node.func)
