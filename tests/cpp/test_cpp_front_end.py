@@ -506,8 +506,10 @@ def test_discovery_respects_packages_ignore_markers_build_folders_and_limits(tmp
 
 
 def test_syntax_node_budget_is_a_diagnostic(tmp_path, monkeypatch):
-    monkeypatch.setattr(extract, "MAX_SYNTAX_NODES", 50)
     write_package(tmp_path, "big", {"src/talker.cpp": TALKER_CPP})
+    _, diags = cpp_graph(tmp_path)
+    assert not any("read in part" in d.message for d in diags)
+    monkeypatch.setattr(extract, "MAX_SYNTAX_NODES", 5)
     _, diags = cpp_graph(tmp_path)
     assert any("read in part" in d.message and d.path == "src/big/src/talker.cpp" for d in diags)
 

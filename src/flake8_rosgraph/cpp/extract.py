@@ -33,16 +33,18 @@ from .calls import (ACTION_FUNCTIONS, COMPONENT_MACRO, GENERIC_METHODS, METHOD_K
                     creates_node, endpoint_form, is_self, made_class, qos_of, receiver_of, template_argument)
 from .facts import ClassFact, EndpointFact, FileFacts, NodeDecl, Owner, ParameterFact
 from .sources import CppSource
-from .syntax import MAX_SYNTAX_NODES, BudgetExceeded, SourceText, damage_diagnostic, text
+from .syntax import MAX_SYNTAX_NODES, BudgetExceeded, SourceText, damage_diagnostic, nodes_of_types, text
 from .values import (UNKNOWN, Binding, CtorArg, Evaluator, FileIndex, ParamRef, call_args, is_declare_parameter,
                      is_syntax, last_name, node_like)
 
 _SCOPES = ("class_specifier", "struct_specifier")
-#: Syntax that never holds a binding or a call worth reading.
-_OPAQUE = frozenset({"comment", "string_literal", "raw_string_literal", "concatenated_string", "number_literal",
-                     "preproc_include", "template_argument_list", "parameter_list", "type_descriptor",
-                     "qualified_identifier", "identifier", "field_identifier", "type_identifier",
-                     "primitive_type", "char_literal"})
+#: Syntax that may hold a binding or a call but none worth reading (a default argument, a
+#: template argument): passed over with all it holds.
+_OPAQUE = ("template_argument_list", "parameter_list", "type_descriptor", "qualified_identifier")
+#: The syntax the first pass reads: bindings and calls, the scopes they are in, and the opaque syntax.
+_WALKED = ("declaration", "field_declaration", "assignment_expression", "call_expression", "preproc_def",
+           "alias_declaration", "type_definition", "using_declaration", "class_specifier", "struct_specifier",
+           "function_definition", "lambda_expression", *_OPAQUE)
 #: Calls read in the second pass: those that may create an entity, a node or a parameter.
 _INTERESTING_CALLS = frozenset(METHOD_KINDS) | frozenset(ACTION_FUNCTIONS) | {"make_shared", "make_unique"}
 #: Values that hold no node (``node_ = nullptr;`` at shutdown does not make another owner).
@@ -72,7 +74,7 @@ def read_file(source: CppSource, parser: Any) -> FileFacts:
         facts.diagnostics.append(damage)
     reader = _Reader(src, facts)
     try:
-        reader.first_pass(tree.root_node)
+        reader.first_pass(tree.root_node, parser.language)
     except BudgetExceeded:
         facts.diagnostics.append(Diagnostic(source.path, 1, f"C++ file read in part: more than "
                                                             f"{MAX_SYNTAX_NODES} syntax nodes", "warning"))
@@ -92,37 +94,43 @@ class _Reader:
         self.node_values: list[tuple[Any, Any]] = []  # (rclcpp::Node node("x") declarator, func)
 
     # -- first pass: bindings, classes, calls ----------------------------------------------------
-    def first_pass(self, root: Any) -> None:
+    def first_pass(self, root: Any, language: Any) -> None:
+        """Hand each syntax node of :data:`_WALKED` types to its reader, with the function and class
+        it is in, in source order; nothing inside :data:`_OPAQUE` syntax. tree-sitter finds the nodes
+        (:func:`.syntax.nodes_of_types`): a fifth of all nodes, and handing every node to Python made
+        this pass a third slower."""
         handlers = {
             "declaration": self._declaration, "field_declaration": self._field,
             "assignment_expression": self._assignment, "call_expression": self._call,
             "preproc_def": self._macro, "alias_declaration": self._alias, "type_definition": self._alias,
             "using_declaration": self._alias,
         }
-        stack: list[tuple[Any, Any, str | None]] = [(root, None, None)]
-        seen = 0
-        while stack:
-            node, func, cls = stack.pop()
-            seen += 1
+        scopes: list[tuple[int, Any, str | None]] = []  # (end byte, function, class) of enclosing scopes
+        skipped_until = -1  # the end byte of the opaque syntax being passed over
+        for seen, node in enumerate(nodes_of_types(language, root, _WALKED), 1):
             if seen > MAX_SYNTAX_NODES:
                 raise BudgetExceeded
+            start = node.start_byte
+            if start < skipped_until:
+                continue
+            while scopes and scopes[-1][0] <= start:
+                scopes.pop()
+            func, cls = scopes[-1][1:] if scopes else (None, None)
             kind = node.type
             handler = handlers.get(kind)
             if handler is not None:
                 handler(node, func, cls)
             elif kind in _SCOPES:
-                cls = self._class(node) or cls
+                scopes.append((node.end_byte, func, self._class(node) or cls))
             elif kind == "function_definition":
                 cls = _method_class(node) or cls
-                func = node
                 self._function(node, cls)
-            elif kind == "lambda_expression" and func is not None:
-                self._parameters(node.child_by_field_name("declarator"), func)
-            elif kind in _OPAQUE:
-                continue
-            children = node.named_children
-            children.reverse()
-            stack += [(child, func, cls) for child in children]
+                scopes.append((node.end_byte, node, cls))
+            elif kind == "lambda_expression":
+                if func is not None:
+                    self._parameters(node.child_by_field_name("declarator"), func)
+            else:
+                skipped_until = node.end_byte  # opaque
 
     def _class(self, node: Any) -> str | None:
         name = node.child_by_field_name("name")

@@ -14,11 +14,12 @@ the stack or the time.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 from ..graph.model import Diagnostic, Location
 
-#: Syntax nodes walked per file at most; beyond, the rest of the file is not read.
+#: Syntax nodes read per file at most; beyond, the rest of the file is not read.
 MAX_SYNTAX_NODES = 400_000
 #: Text that marks a damaged region as one that may hide an rclcpp call.
 _ROS_CALL_TEXT = (b"create_", b"declare_parameter", b"make_shared", b"Node(")
@@ -53,6 +54,25 @@ class SourceText:
         line_start = node.start_byte - byte_col
         column = len(self.data[line_start:node.start_byte].decode("utf-8", "replace")) + 1
         return Location(self.path, row + 1, column)
+
+
+def nodes_of_types(language: Any, root: Any, types: tuple[str, ...]) -> list[Any]:
+    """Every node of ``types`` under ``root`` (itself included), parents before their children
+    and otherwise in source order. tree-sitter's query engine finds them without handing each
+    node of the tree to Python; it returns them grouped by type, hence the sort."""
+    import tree_sitter
+
+    query = _query(language, types)
+    cursor_type = getattr(tree_sitter, "QueryCursor", None)  # tree-sitter >= 0.25
+    found = (cursor_type(query) if cursor_type is not None else query).captures(root)
+    return sorted(found.get("node", ()), key=lambda node: (node.start_byte, -node.end_byte))
+
+
+@lru_cache(maxsize=8)
+def _query(language: Any, types: tuple[str, ...]) -> Any:
+    import tree_sitter
+
+    return tree_sitter.Query(language, "[" + " ".join(f"({kind})" for kind in types) + "] @node")
 
 
 def text(node: Any) -> str:
