@@ -26,7 +26,7 @@ from importlib.resources import files
 from pathlib import Path
 from typing import Callable, Protocol, Sequence
 
-from . import forked
+from . import forked, inventory
 from .absint.engine import Analysis
 from .absint.library import LibraryModel, load_library
 from .absint.program import Program
@@ -165,7 +165,7 @@ def build_graph(root: Path, stub_files: Sequence[Path] = (),
     ``metadata_memo``: where the C++ ends of an unchanged C++ tree, the facts of unchanged groups
     of Python modules and unchanged metadata are kept between runs (the cache); ``outlines``:
     what earlier runs learnt of each Python file, so that files whose group is kept are not parsed."""
-    with collector_paused():
+    with collector_paused(), inventory.shared(root):
         return _build_graph(Path(root), stub_files, interface_dirs, buffers, cpp_memo, facts_memo,
                             metadata_memo, outlines)
 

@@ -51,7 +51,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Iterator
 
-from . import __version__
+from . import __version__, inventory
 from .cpp import CPP_SUFFIXES
 from .escaping import escape_text
 from .graph.model import Diagnostic, Location
@@ -146,7 +146,7 @@ def workspace_inputs(root: Path) -> list[tuple[str, str]]:
         return [(root.name, str(root))] if root.exists() else []
     top = str(root)
     found: list[tuple[str, str]] = []
-    for directory, dirnames, filenames in os.walk(top):
+    for directory, dirnames, filenames in inventory.walk(top):
         dirnames[:] = [d for d in dirnames if not d.startswith(".") and d not in SKIP_DIRS]
         folder = os.path.relpath(directory, top).replace(os.sep, "/")
         prefix = "" if folder == "." else folder + "/"
@@ -686,6 +686,11 @@ def load_or_build(root: Path, settings: Settings, build: bool = True) -> Workspa
     which is slower but never wrong.
     """
     root = Path(os.path.abspath(root))
+    with inventory.shared(root):  # the key and the analysis read one listing of the workspace
+        return _load_or_build(root, settings, build)
+
+
+def _load_or_build(root: Path, settings: Settings, build: bool) -> WorkspaceReport | None:
     secret = machine_secret()
     cache_dir = _cache_dir(root, settings)
     if secret is None or cache_dir is None:

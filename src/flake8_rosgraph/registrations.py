@@ -37,6 +37,7 @@ import sys
 import xml.parsers.expat
 from pathlib import Path
 
+from . import inventory
 from .graph.model import Diagnostic
 from .launch.packages import package_xml_files, setup_entry_points
 from .launch.xml_front import MAX_XML_DEPTH, XmlRefused, safe_parser
@@ -170,7 +171,7 @@ def _robot_description_plugins(folder: Path, root: Path) -> list[str]:
     """``type`` of every Python ``<plugin>`` inside ``<webots>`` in the package's ``*.urdf`` and
     ``*.xacro`` files (hidden and build folders skipped)."""
     classes: list[str] = []
-    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+    for dirpath, dirnames, filenames in inventory.walk(folder):
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         for name in sorted(filenames):
             if not name.endswith(_DESCRIPTION_SUFFIXES):
@@ -214,7 +215,7 @@ def _embedded_python_classes(folder: Path, root: Path) -> list[str]:
     from .cpp import CPP_SUFFIXES
 
     classes: list[str] = []
-    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+    for dirpath, dirnames, filenames in inventory.walk(folder):
         dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("."))
         for name in sorted(filenames):
             if os.path.splitext(name)[1] not in CPP_SUFFIXES:

@@ -24,6 +24,7 @@ from .absint.outline import attribute_stores, declared_names, edits_sys_path, im
 from .absint.program import Module
 from .graph.model import Diagnostic
 from .options import Buffers
+from . import inventory
 from .cmake import cmake_commands
 from .manifest import parse_manifest
 from .safe_io import MAX_SOURCE_BYTES, SKIP_DIRS, UnsafeFile, read_bytes, read_head
@@ -78,6 +79,11 @@ def left_out(folder: Path, filenames: list[str], root: Path) -> Diagnostic | Non
                           f"{marker}: the build leaves this folder out; not analysed", "info")
     if "package.xml" not in filenames:
         return None
+    return inventory.remember(("ros1", str(folder), str(root)), lambda: _ros1_left_out(folder, root))
+
+
+def _ros1_left_out(folder: Path, root: Path) -> Diagnostic | None:
+    """The ROS 1 part of :func:`left_out`, asked once a run (every walker asks it of every package)."""
     text = _small_text(folder / "package.xml", MAX_MANIFEST_BYTES)
     ros1 = _ros1_package(text) if text is not None else None
     if ros1 is not None:
@@ -109,7 +115,7 @@ def python_files(root: Path, skipped: list[Diagnostic] | None = None) -> list[Pa
         return [root]
     found: list[Path] = []
     listed: set[Path] = set()  # build files sit above their scripts: walked first (top-down)
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=None):
+    for dirpath, dirnames, filenames in inventory.walk(root):
         folder = Path(dirpath)
         why = left_out(folder, filenames, root)
         if why is not None:

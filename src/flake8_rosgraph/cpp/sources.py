@@ -15,6 +15,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import inventory
 from ..graph.model import Diagnostic
 from ..safe_io import UnsafeFile, read_bytes
 from ..workspace import SKIP_DIRS, left_out, relative
@@ -42,7 +43,7 @@ def _package_files(root: Path) -> list[tuple[Path, str]]:
     """``(file, package folder)`` for every C++ file under a package folder, sorted by path."""
     found: list[tuple[Path, str]] = []
     packages: dict[str, str] = {}
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
+    for dirpath, dirnames, filenames in inventory.walk(root):
         if left_out(Path(dirpath), filenames, root) is not None:
             dirnames[:] = []  # the Python walk reports the folder
             continue

@@ -10,7 +10,6 @@ becomes a diagnostic.
 from __future__ import annotations
 
 import json
-import os
 import re
 import stat
 from dataclasses import dataclass, field
@@ -18,6 +17,7 @@ from importlib.resources import files
 from pathlib import Path
 from typing import Iterable
 
+from .. import inventory
 from .definitions import PARTS, InterfaceError, MessageDef, parse_interface, parse_message
 
 #: Interface files larger than this are skipped (the biggest standard one is a few KiB).
@@ -180,7 +180,7 @@ def _packages(folder: Path) -> Iterable[tuple[Path, str]]:
     """``(folder, package name)`` of every package.xml under ``folder``, in path order."""
     if not folder.is_dir():
         return
-    for dirpath, dirnames, filenames in os.walk(folder, followlinks=False):
+    for dirpath, dirnames, filenames in inventory.walk(folder):
         dirnames[:] = sorted(d for d in dirnames if d not in _SKIP_DIRS and not d.startswith("."))
         if "COLCON_IGNORE" in filenames or "AMENT_IGNORE" in filenames:
             dirnames[:] = []

@@ -7,11 +7,11 @@ content is a ``<launch>`` element or a top-level ``launch:`` list.
 """
 from __future__ import annotations
 
-import os
 import xml.parsers.expat
 from pathlib import Path
 from typing import Mapping
 
+from .. import inventory
 from ..absint.engine import Analysis
 from ..graph.model import Diagnostic
 from ..safe_io import describe, is_within, read_text
@@ -63,7 +63,7 @@ def frontend_launch_files(root: Path, diagnostics: list[Diagnostic] | None = Non
         diagnostics.append(Diagnostic(rel, 1, f"folder not read, launch files in it are not analysed: "
                                               f"{error.strerror or error}"))
 
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
+    for dirpath, dirnames, filenames in inventory.walk(root, unreadable):
         why = left_out(Path(dirpath), filenames, root)
         if why is not None:
             dirnames[:] = []

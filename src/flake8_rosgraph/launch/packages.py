@@ -24,6 +24,7 @@ import xml.parsers.expat
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from .. import inventory
 from ..absint.folding import MAX_STR, safe_template, wide_template
 from ..graph.model import Diagnostic
 from ..cmake import cmake_commands, expand, literal_variables
@@ -85,7 +86,7 @@ def package_xml_files(root: Path, diagnostics: list[Diagnostic] | None = None) -
             diagnostics.append(Diagnostic(rel, 1, f"folder not read, packages in it are not known: "
                                                   f"{error.strerror or error}"))
 
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False, onerror=unreadable):
+    for dirpath, dirnames, filenames in inventory.walk(root, unreadable):
         why = left_out(Path(dirpath), filenames, root)
         if why is not None:
             dirnames[:] = []
