@@ -159,12 +159,14 @@ class ExpressionSemantics:
         return BOOLS
 
     def e_IfExp(self, node: ast.IfExp) -> Value:
-        decided = self.truth(self.eval(node.test))
-        if decided is True:
-            return self.eval(node.body)
-        if decided is False:
-            return self.eval(node.orelse)
-        return self.eval(node.body).join(self.eval(node.orelse))
+        test = self.eval(node.test)
+        decided = self.truth(test)
+        if decided is None:
+            return self.eval(node.body).join(self.eval(node.orelse))
+        chosen = self.eval(node.body if decided else node.orelse)
+        # Chosen by an overridable default (``None if args.trace is None else path``): what
+        # runs by default, itself only a default, so a later ``if`` on it explores both ways.
+        return soften(chosen) if test.soft else chosen
 
     def e_Tuple(self, node: ast.Tuple | ast.List) -> Value:
         kind = "tuple" if isinstance(node, ast.Tuple) else "list"

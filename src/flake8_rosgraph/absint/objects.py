@@ -34,7 +34,12 @@ class ObjectSemantics:
             return TOP
         out = BOTTOM
         for atom in value:
-            out = out.join(self._attr_of(atom, attr))
+            found = self._attr_of(atom, attr)
+            if found.is_bottom and value.soft:
+                # An overridable default without the attribute (``args.trace.resolve()``
+                # with ``--trace`` defaulting to None): the value given instead has it.
+                found = TOP
+            out = out.join(found)
             if out.is_top and out.is_saturated:
                 # Only the saturated ⊤ absorbs what the other atoms give: a ⊤ that keeps
                 # known names still takes theirs (stopping there made the result depend on
