@@ -1,8 +1,10 @@
 """Extraction mechanisms found on a seventh round of real repositories outside every test set:
 a value chosen by a command-line option's default (``None if args.trace is None else
 args.trace.resolve()``) is itself only a default, so a later ``if`` on it explores both
-ways. Each on a realistic multi-file workspace, with a twin where following the code must
-not invent an entity."""
+ways; and a configuration object filled by ``setattr`` in a loop over a table of parameter
+defaults longer than a value holds keeps each key's own value, while one filled by names the
+analysis does not know keeps none of its class defaults for sure. Each on a realistic
+multi-file workspace, with a twin where following the code must not invent an entity."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -101,3 +103,111 @@ def test_a_conditional_on_a_plain_none_still_decides_the_branch(tmp_path: Path) 
     root = write(tmp_path, files)
     assert entities(root, TOPICS) == {"/sim_bridge": [("subscriptions", "/odom")]}
     assert reasons(root)[("sim_runner/sim_runner/simulation.py", 15)][0] == "missing"
+
+
+# -- setattr over a table of parameter defaults ------------------------------------------------
+FIELDS = "".join(f"        joint_{i}_limit: float = {i}.5\n" for i in range(14))
+KEYS = "".join(f"                'joint_{i}_limit': config.joint_{i}_limit,\n" for i in range(14))
+CONFIG = """
+    from dataclasses import dataclass
+
+
+    @dataclass
+    class PolicyConfig:
+        '''Everything the deployed policy reads, with the values used on the robot.'''
+
+        control_frequency: float = 20.0
+        use_left_arm: bool = False
+        use_right_arm: bool = True
+        left_arm_state_topic: str = '/left_arm/joint_states'
+        right_arm_state_topic: str = '/right_arm/joint_states'
+        right_arm_command_topic: str = '/teleop/right/servo_j'
+{fields}
+        @classmethod
+        def from_node(cls, node):
+            config = cls()
+            defaults = {{
+                'control_frequency': config.control_frequency,
+                'use_left_arm': config.use_left_arm,
+                'use_right_arm': config.use_right_arm,
+                'left_arm_state_topic': config.left_arm_state_topic,
+                'right_arm_state_topic': config.right_arm_state_topic,
+                'right_arm_command_topic': config.right_arm_command_topic,
+{keys}            }}
+            for name, default in defaults.items():
+                node.declare_parameter(name, default)
+                setattr(config, name, node.get_parameter(name).value)
+            return config
+""".format(fields=FIELDS, keys=KEYS)
+POLICY_NODE = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import JointState
+    from std_msgs.msg import Float64MultiArray
+
+    from policy_runner.config import PolicyConfig
+
+
+    class PolicyNode(Node):
+        def __init__(self):
+            super().__init__('policy_runner')
+            self.config = {load}
+            if self.config.use_left_arm:
+                self.create_subscription(JointState, self.config.left_arm_state_topic, self.on_left, 10)
+            if self.config.use_right_arm:
+                self.create_subscription(JointState, self.config.right_arm_state_topic, self.on_right, 10)
+            self.command = self.create_publisher(
+                Float64MultiArray, self.config.right_arm_command_topic, 10)
+
+        def on_left(self, msg):
+            pass
+
+        def on_right(self, msg):
+            self.command.publish(Float64MultiArray(data=list(msg.position)))
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(PolicyNode())
+"""
+
+
+def _policy(tmp_path: Path, load: str, config: str = CONFIG) -> Path:
+    return write(tmp_path, package("policy_runner", "'policy = policy_runner.policy_node:main'", {
+        "config": config, "policy_node": POLICY_NODE.replace("{load}", load)}))
+
+
+def test_setattr_over_a_long_table_of_defaults_keeps_each_key(tmp_path: Path) -> None:
+    """Twenty keys, more than a value holds: each ``setattr`` still names its key and the
+    parameter's default, so the left arm's branch (default off, a parameter may switch it on)
+    is explored and every topic is named (ACT inference node: seven sites reported never
+    reached)."""
+    root = _policy(tmp_path, "PolicyConfig.from_node(self)")
+    assert entities(root, TOPICS) == {"/policy_runner": [
+        ("publishers", "/teleop/right/servo_j"), ("subscriptions", "/left_arm/joint_states"),
+        ("subscriptions", "/right_arm/joint_states")]}
+
+
+def test_setattr_of_names_read_from_a_file_keeps_no_default_for_sure(tmp_path: Path) -> None:
+    """A configuration filled from a YAML file by names the analysis cannot know: any field
+    may change, so the left arm's branch is explored too; each topic is its default or a
+    name the file gives (only partly known)."""
+    config = CONFIG.replace(
+        "for name, default in defaults.items():\n"
+        "                node.declare_parameter(name, default)\n"
+        "                setattr(config, name, node.get_parameter(name).value)",
+        "import yaml\n"
+        "            with open(node.declare_parameter('config_file', '').value) as f:\n"
+        "                for name, value in yaml.safe_load(f).items():\n"
+        "                    setattr(config, name, value)")
+    root = _policy(tmp_path, "PolicyConfig.from_node(self)", config)
+    names = {name for _, name in entities(root, ("subscriptions",))["/policy_runner"]}
+    assert names == {"/left_arm/joint_states", "/right_arm/joint_states", "?"}
+
+
+def test_class_defaults_nothing_overwrites_still_decide_the_branch(tmp_path: Path) -> None:
+    """The twin: the same configuration used as it is (no setattr, no parameter) keeps its
+    defaults; the left arm's subscription is never created and none is invented."""
+    root = _policy(tmp_path, "PolicyConfig()")
+    assert entities(root, TOPICS) == {"/policy_runner": [
+        ("publishers", "/teleop/right/servo_j"), ("subscriptions", "/right_arm/joint_states")]}

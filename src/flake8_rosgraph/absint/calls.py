@@ -789,7 +789,8 @@ class CallSemantics:
             names = pos[1].strings()
             for attr in names or ():
                 self.store_attr(pos[0], attr, pos[2])
-            if not names:  # stored where no code the analysis follows reads it
+            if not names:  # any attribute it names may now hold the value
+                self.store_any_attr(pos[0], pos[2])
                 self.escape_value(pos[2])
             return const(None)
         if name in ("locals", "vars") and not pos and not args.kw and not args.star:

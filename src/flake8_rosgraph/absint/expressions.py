@@ -220,20 +220,26 @@ class ExpressionSemantics:
     def _call_per_row(self, node: ast.Call) -> Value | None:
         """A creation call in the body of a loop over a written-out table, evaluated once per
         row with the loop variables its arguments read bound to that row's values, so that
-        each entity gets its own name, type and callback (:mod:`.rows`); ``None`` when the
+        each entity gets its own name, type and callback (:mod:`.rows`); likewise a
+        ``setattr`` whose name is such a variable, so that each key gets its own value (a
+        table longer than a value holds would leave the name unknown). ``None`` when the
         call is not one (evaluated once, as usual)."""
         frame = self.frame
         arguments = [*node.args, *(kw.value for kw in node.keywords)]
+        setter = self._is_setattr(node)
+        if setter:  # ``setattr(cfg, key, node.get_parameter(key).value)``: split by the name
+            arguments = node.args[:2]
         if not arguments or not all(self._pure_test(arg) for arg in arguments):
             return None
-        read = {n.id for arg in arguments for n in ast.walk(arg) if isinstance(n, ast.Name)}
+        named = arguments[1:] if setter else arguments  # a setter is split by its name alone
+        read = {n.id for arg in named for n in ast.walk(arg) if isinstance(n, ast.Name)}
         best: tuple[int, LoopRows] | None = None
         for loop, table in frame.loop_rows.items():
             used = read.intersection(table.names)
             if used and all(self._holder(n).get(n) is v for n, v in zip(table.names, table.bound)) \
                     and (best is None or len(used) > len(read.intersection(best[1].names))):
                 best = (loop, table)
-        if best is None or not self._creates(self.eval(node.func)):
+        if best is None or not (setter or self._creates(self.eval(node.func))):
             return None
         loop, table = best
         holders = [self._holder(name) for name in table.names]
@@ -250,6 +256,13 @@ class ExpressionSemantics:
                 holder[name] = value
             frame.row = None
         return out
+
+    def _is_setattr(self, node: ast.Call) -> bool:
+        """``setattr(obj, name, value)`` with the builtin: a store by name, which a loop over
+        a written-out table makes once per row (each key with the value the row gives it)."""
+        return isinstance(node.func, ast.Name) and node.func.id == "setattr" and len(node.args) == 3 \
+            and not node.keywords and not any(isinstance(a, ast.Starred) for a in node.args) \
+            and self.load_name("setattr") == atoms([Extern("builtins.setattr")])
 
     def _holder(self, name: str) -> dict[str, Value]:
         """Where ``name`` lives here: the innermost comprehension binding it, else the frame."""

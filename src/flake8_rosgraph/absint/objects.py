@@ -13,6 +13,7 @@ from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, Dic
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
 from .calls import OBJECT_NEW, Args
+from .class_attrs import data_attribute_names
 from .enums import ENUM_BASES, MIXIN_BASES, member_names, member_site
 from .fieldclasses import FIELD_BASES, Field, decorated_fields, own_fields
 
@@ -292,6 +293,24 @@ class ObjectSemantics:
                 self.an.write(("k", atom.cid, attr), value)
             elif isinstance(atom, ModuleAtom):
                 self.an.write(("g", atom.name, attr), value)
+
+    def store_any_attr(self, target: Value, value: Value) -> None:
+        """``setattr(target, name, value)`` with a name the analysis does not know: ``value``
+        joins every data attribute the workspace classes of ``target`` name in their source
+        (:mod:`.class_attrs`), so that none keeps its default as a sure value."""
+        for atom in () if target.is_top else target:
+            cls = atom.cls if isinstance(atom, Obj) else atom
+            if not isinstance(cls, ClassAtom):
+                continue
+            names: set[str] = set()
+            for klass in self.mro(cls):
+                if isinstance(klass, ClassAtom):
+                    names |= data_attribute_names(self.program.classes[klass.cid])
+            for attr in sorted(names):
+                if isinstance(atom, Obj):
+                    self.an.write(("a", atom.site, attr), value)
+                else:
+                    self.an.write(("k", atom.cid, attr), value)
 
     def _setters(self, obj: Obj, attr: str) -> list[int]:
         """The property setters ``obj.<attr> = …`` runs: those of the first workspace class
