@@ -211,3 +211,69 @@ def test_class_defaults_nothing_overwrites_still_decide_the_branch(tmp_path: Pat
     root = _policy(tmp_path, "PolicyConfig()")
     assert entities(root, TOPICS) == {"/policy_runner": [
         ("publishers", "/teleop/right/servo_j"), ("subscriptions", "/right_arm/joint_states")]}
+
+
+# -- explain: a type left unknown because names and types cannot be paired --------------------
+SHUTDOWN = """
+    import sys
+    from dataclasses import dataclass
+
+    import rclpy
+    from lifecycle_msgs.srv import ChangeState
+    from nav2_msgs.srv import ManageLifecycleNodes
+
+
+    @dataclass(frozen=True)
+    class Step:
+        service: str
+        kind: str
+        command: int
+
+
+    STEPS = (
+        Step('/lifecycle_manager_navigation/manage_nodes', 'manager', 1),
+        Step('/slam_toolbox/change_state', 'lifecycle', 4),
+    )
+
+
+    def call_step(node, step):
+        if step.kind == 'manager':
+            service_type = ManageLifecycleNodes
+            request = ManageLifecycleNodes.Request(command=step.command)
+        else:
+            service_type = ChangeState
+            request = ChangeState.Request()
+            request.transition.id = step.command
+        client = node.create_client(service_type, step.service)
+        client.wait_for_service(timeout_sec=2.0)
+        return client.call_async(request)
+
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('ordered_shutdown')
+        for step in {steps}:
+            call_step(node, step)
+"""
+
+
+def test_explain_names_the_types_it_cannot_pair_with_the_names(tmp_path: Path) -> None:
+    """Two steps, each with its own service and type, through one call: the graph cannot
+    pair them and leaves the type unknown; the reason names both types instead of calling a
+    value bound to a known class unknown."""
+    root = write(tmp_path, package("shutdown", "'shutdown = shutdown.ordered:main'",
+                                   {"ordered": SHUTDOWN.replace("{steps}", "STEPS")}))
+    status, why = reasons(root)[("shutdown/shutdown/ordered.py", 30)]
+    assert status == "unknown"
+    assert why == ("unknown type", "it is one of 2 types (lifecycle_msgs/srv/ChangeState, "
+                   "nav2_msgs/srv/ManageLifecycleNodes) and which of its names goes with which "
+                   "type is not known")
+
+
+def test_one_name_with_two_possible_types_is_one_entity_per_type(tmp_path: Path) -> None:
+    """The twin: one service whose kind the command line gives, so one name and two possible
+    types; each type is an entity of its own and the site is complete, with no reason to give."""
+    step = "(Step('/slam_toolbox/change_state', sys.argv[1], 4),)"
+    root = write(tmp_path, package("shutdown", "'shutdown = shutdown.ordered:main'",
+                                   {"ordered": SHUTDOWN.replace("{steps}", step)}))
+    assert reasons(root)[("shutdown/shutdown/ordered.py", 30)] == ("complete", ())
