@@ -277,3 +277,62 @@ def test_one_name_with_two_possible_types_is_one_entity_per_type(tmp_path: Path)
     root = write(tmp_path, package("shutdown", "'shutdown = shutdown.ordered:main'",
                                    {"ordered": SHUTDOWN.replace("{steps}", step)}))
     assert reasons(root)[("shutdown/shutdown/ordered.py", 30)] == ("complete", ())
+
+
+# -- a guard that leaves the function names what passes it -------------------------------------
+BRIDGE = """
+    import rclpy
+    from rclpy.node import Node
+    from unitree_go.msg import LowState
+
+    from go2_bridge.profile import load_profile
+
+    LOWSTATE_TOPICS = ('/lowstate', '/lf/lowstate')
+
+
+    class ControlBridge(Node):
+        def __init__(self, profile):
+            super().__init__('go2_control_bridge')
+            control = profile.get('control', {})
+            lowstate = str(control.get('lowstate_topic', '/lowstate'))
+            if lowstate not in LOWSTATE_TOPICS:
+                {refuse}
+            self.create_subscription(LowState, lowstate, self.on_lowstate, 10)
+
+        def on_lowstate(self, msg):
+            self.get_logger().debug(f'battery {msg.bms_state.soc}')
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ControlBridge(load_profile()))
+"""
+PROFILE = """
+    import json
+    import os
+
+
+    def load_profile():
+        with open(os.environ['GO2_PROFILE']) as f:
+            return json.load(f)
+"""
+
+
+def _bridge(tmp_path: Path, refuse: str) -> Path:
+    return write(tmp_path, package("go2_bridge", "'bridge = go2_bridge.bridge:main'", {
+        "bridge": BRIDGE.replace("{refuse}", refuse), "profile": PROFILE}))
+
+
+def test_a_value_past_an_allowlist_guard_is_one_of_the_listed(tmp_path: Path) -> None:
+    """``if lowstate not in LOWSTATE_TOPICS: raise``: past the guard the topic read from a
+    JSON profile is one of the two allowed names (robot-scope's Go2 bridge)."""
+    root = _bridge(tmp_path, "raise ValueError('lowstate_topic is not allowlisted')")
+    assert entities(root, TOPICS) == {"/go2_control_bridge": [
+        ("subscriptions", "/lf/lowstate"), ("subscriptions", "/lowstate")]}
+
+
+def test_a_check_that_lets_every_value_through_names_nothing(tmp_path: Path) -> None:
+    """The twin: the same check only logs, so any topic the profile names goes on; the name
+    stays unknown and no allowed name is invented for it."""
+    root = _bridge(tmp_path, "print('unusual lowstate topic', lowstate)")
+    assert entities(root, TOPICS) == {"/go2_control_bridge": [("subscriptions", "?")]}
