@@ -14,6 +14,8 @@ from test_recall_mechanisms import entities
 from test_recall_scopes_and_reasons import reasons
 from test_workspace_discovery import write
 
+from flake8_rosgraph.analysis import build_graph
+
 TOPICS = ("publishers", "subscriptions")
 
 
@@ -336,3 +338,71 @@ def test_a_check_that_lets_every_value_through_names_nothing(tmp_path: Path) -> 
     stays unknown and no allowed name is invented for it."""
     root = _bridge(tmp_path, "print('unusual lowstate topic', lowstate)")
     assert entities(root, TOPICS) == {"/go2_control_bridge": [("subscriptions", "?")]}
+
+
+# -- rosidl_runtime_py: interface classes loaded by name ----------------------------------------
+GATEWAY = """
+    from rclpy.action import ActionClient
+    from rosidl_runtime_py.utilities import get_action, get_message
+
+    from nav_gateway.names import ODOM_TYPE, SCAN_TYPE
+
+
+    class NavigationGateway:
+        '''Serves the dashboard: robot state in, navigation goals out.'''
+
+        def __init__(self, node):
+            self.node = node
+            odometry = get_message(ODOM_TYPE)
+            self.node.create_subscription(odometry, '/odom', self.on_odom, 10)
+            self.node.create_subscription(get_message(SCAN_TYPE), '/scan', self.on_scan, 10)
+            self.goals = ActionClient(node, get_action('nav2_msgs/action/NavigateToPose'),
+                                      'navigate_to_pose')
+
+        def on_odom(self, msg):
+            self.pose = msg.pose.pose
+
+        def on_scan(self, msg):
+            self.ranges = msg.ranges
+"""
+GATEWAY_NODE = """
+    import rclpy
+    from rclpy.node import Node
+
+    from nav_gateway.gateway import NavigationGateway
+
+
+    def main():
+        rclpy.init()
+        node = Node('dashboard_gateway')
+        NavigationGateway(node)
+        rclpy.spin(node)
+"""
+
+
+def _gateway(tmp_path: Path, names: str) -> Path:
+    return write(tmp_path, package("nav_gateway", "'gateway = nav_gateway.main:main'", {
+        "gateway": GATEWAY, "main": GATEWAY_NODE, "names": names}))
+
+
+def test_get_message_of_a_full_name_is_that_message_class(tmp_path: Path) -> None:
+    """``get_message('nav_msgs/msg/Odometry')`` is ``nav_msgs.msg.Odometry``: the
+    subscriptions and the action client have their types (robot-scope's navigation
+    gateway: eight sites with unknown types)."""
+    root = _gateway(tmp_path, "ODOM_TYPE = 'nav_msgs/msg/Odometry'\nSCAN_TYPE = 'sensor_msgs/msg/LaserScan'\n")
+    graph = build_graph(root)
+    types = sorted((e.kind, e.name, e.type) for node in graph.nodes for e in node.entities
+                   if e.kind in ("subscriptions", "action_clients"))
+    assert types == [("action_clients", "/navigate_to_pose", "nav2_msgs/action/NavigateToPose"),
+                     ("subscriptions", "/odom", "nav_msgs/msg/Odometry"),
+                     ("subscriptions", "/scan", "sensor_msgs/msg/LaserScan")]
+
+
+def test_get_message_of_a_short_or_unknown_name_stays_unknown(tmp_path: Path) -> None:
+    """The twin: a short name (the library completes it by the kind asked for) and a name
+    from the environment give no type; nothing is guessed."""
+    root = _gateway(tmp_path, "import os\nODOM_TYPE = 'nav_msgs/Odometry'\nSCAN_TYPE = os.environ['SCAN_TYPE']\n")
+    graph = build_graph(root)
+    types = sorted((e.name, e.type) for node in graph.nodes for e in node.entities
+                   if e.kind == "subscriptions")
+    assert types == [("/odom", None), ("/scan", None)]
