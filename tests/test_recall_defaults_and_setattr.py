@@ -406,3 +406,56 @@ def test_get_message_of_a_short_or_unknown_name_stays_unknown(tmp_path: Path) ->
     types = sorted((e.name, e.type) for node in graph.nodes for e in node.entities
                    if e.kind == "subscriptions")
     assert types == [("/odom", None), ("/scan", None)]
+
+
+# -- .get(key, default) on a mapping read from a file ------------------------------------------
+TELEOP = """
+    import rclpy
+    import yaml
+    from geometry_msgs.msg import Twist
+    from rclpy.node import Node
+    from sensor_msgs.msg import Joy
+
+
+    class JoyTeleop(Node):
+        def __init__(self, config_path):
+            super().__init__('joy_teleop')
+            with open(config_path) as f:
+                self.config = yaml.safe_load(f) or {}
+            self.cmd = self.create_publisher(Twist, self.config.get('cmd_topic'{default}), 10)
+            self.create_subscription(Joy, 'joy', self.on_joy, 10)
+
+        def on_joy(self, msg):
+            twist = Twist()
+            twist.linear.x = msg.axes[1]
+            self.cmd.publish(twist)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(JoyTeleop('/etc/teleop.yaml'))
+"""
+
+
+def _teleop(tmp_path: Path, default: str) -> Path:
+    return write(tmp_path, package("joy_teleop", "'teleop = joy_teleop.teleop:main'", {
+        "teleop": TELEOP.replace("{default}", default)}))
+
+
+def test_get_with_a_default_on_an_unknown_mapping_keeps_the_default(tmp_path: Path) -> None:
+    """``self.config.get('cmd_topic', '/cmd_vel')`` on a YAML file's contents: the default
+    when the file lacks the key, something unknown otherwise; the known name stays in the
+    graph, marked as only partly known (qyh task engine's gripper skills, rs2_listener)."""
+    root = _teleop(tmp_path, ", '/cmd_vel'")
+    assert entities(root, ("publishers",)) == {
+        "/joy_teleop": [("publishers", "/cmd_vel"), ("publishers", "?")]}
+    status, why = reasons(root)[("joy_teleop/joy_teleop/teleop.py", 13)]
+    assert status == "unknown"
+    assert why[0] == ("unknown name (known only partly: '/cmd_vel' on some paths, unknown "
+                      "on others)")
+
+
+def test_get_without_a_default_on_an_unknown_mapping_names_nothing(tmp_path: Path) -> None:
+    """The twin: without a default nothing is known of the name, and none is invented."""
+    root = _teleop(tmp_path, "")
+    assert entities(root, ("publishers",)) == {"/joy_teleop": [("publishers", "?")]}

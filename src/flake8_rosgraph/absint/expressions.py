@@ -394,6 +394,7 @@ class ExpressionSemantics:
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
+        holder = BOTTOM  # what a method is called on
         if isinstance(node.func, ast.Attribute):
             holder = self.eval(node.func.value)
             if node.func.attr in SAME_TEXT and not node.args and not node.keywords and holder.origin is not None \
@@ -426,6 +427,11 @@ class ExpressionSemantics:
                     star = True
         result = self.call(func, Args(args, kwargs, star), node)
         target = node.func
+        if isinstance(target, ast.Attribute) and target.attr == "get" and holder.is_top \
+                and len(args) == 2 and not kwargs and not star:
+            # ``config.get('cmd_topic', '/cmd_vel')`` on a mapping read from a file: the
+            # default where the key is missing, unknown otherwise (the default kept beside it).
+            result = result.join(args[1])
         if isinstance(target, ast.Attribute) and target.attr in MUTATORS and not star \
                 and isinstance(target.value, (ast.Name, ast.Attribute)):
             holder = self.eval(target.value)
