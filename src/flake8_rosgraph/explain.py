@@ -27,7 +27,7 @@ from .absint.values import BOTTOM
 from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
 from .absint.program import Function, Module, Program
-from .graph.builder import ENTITY_KINDS
+from .graph.builder import ENTITY_KINDS, unpaired_types
 from .graph.model import Entity, RosGraph
 from .graph.parameter_switches import switched_off
 
@@ -269,7 +269,8 @@ class _Explainer:
             if field == "node":
                 reasons.extend(self._presumed_reasons(key))
                 continue
-            found = self._owner_reasons(key) + self._parameter_reasons(key) if field == "name" else []
+            found = self._owner_reasons(key) + self._parameter_reasons(key) if field == "name" \
+                else _unpaired_reasons(effects) if field == "type" else []
             if not found:  # the written value itself is unknown
                 param, argument = self._field_argument(call, model, effects, field)
                 found = self._origin_reasons(call, scope, argument, module)
@@ -555,6 +556,17 @@ def _calls_with_scope(tree: ast.Module):
                 stack.append((child, scope, child))
             else:
                 stack.append((child, scope, klass))
+
+
+def _unpaired_reasons(effects: list[Effect]) -> list[str]:
+    """A type left unknown because the call has several names and several types, which the
+    analysis cannot pair (:func:`~.graph.builder.unpaired_types`)."""
+    for eff in effects:
+        types = unpaired_types(eff) if eff.kind in ENTITY_KINDS else []
+        if types:
+            return [f"it is one of {len(types)} types ({', '.join(types)}) and which of its "
+                    "names goes with which type is not known"]
+    return []
 
 
 def _some(names: set[str]) -> str:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 import itertools
 import posixpath
+import re
 import string
 from dataclasses import dataclass
 from typing import Iterator
@@ -668,6 +669,8 @@ class CallSemantics:
             return _soft_like(ref.data, bound, atoms(Const.of(k) for k in keys)) if keys else TOP
         if ref.how == "constant":
             return self.named_constant(ref.data, bound)
+        if ref.how == "interface":
+            return self.named_interface(ref.data, bound)
         if ref.how == "field":
             if isinstance(receiver, Record):
                 return receiver.field(ref.data) or TOP
@@ -699,6 +702,16 @@ class CallSemantics:
                 return TOP
             out = out.join(found)
         return TOP if out.is_bottom else _soft_like(template, bound, out)
+
+    def named_interface(self, template: str, bound: dict) -> Value:
+        """The interface classes every expansion of ``template`` names as ``pkg/msg/Name``
+        (``srv``, ``action``): what ``from pkg.msg import Name`` binds. Unknown when one
+        expansion is not such a name (``'pkg/Name'``, which the library completes by the
+        kind it is asked for, included)."""
+        keys = self.format_keys(template, bound)
+        if not keys or not all(_INTERFACE_NAME.fullmatch(k) for k in keys):
+            return TOP
+        return _soft_like(template, bound, join_all(self.extern(k.replace("/", ".")) for k in keys))
 
     def format_keys(self, template: str, bound: dict) -> list[str]:
         """All expansions of a key template over constant arguments.
@@ -789,7 +802,8 @@ class CallSemantics:
             names = pos[1].strings()
             for attr in names or ():
                 self.store_attr(pos[0], attr, pos[2])
-            if not names:  # stored where no code the analysis follows reads it
+            if not names:  # any attribute it names may now hold the value
+                self.store_any_attr(pos[0], pos[2])
                 self.escape_value(pos[2])
             return const(None)
         if name in ("locals", "vars") and not pos and not args.kw and not args.star:
@@ -1022,6 +1036,9 @@ def _dotted(value: Value) -> list[str] | None:
         return None
     return sorted({f"{c}." if c else "" for c in consts})
 
+
+#: An interface's full name: ``package/msg/Name`` (``srv``, ``action``).
+_INTERFACE_NAME = re.compile(r"[A-Za-z_]\w*/(msg|srv|action)/[A-Za-z_]\w*")
 
 #: Filters usable in library-model key templates (``{param|filter}``).
 KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted}

@@ -159,12 +159,14 @@ class ExpressionSemantics:
         return BOOLS
 
     def e_IfExp(self, node: ast.IfExp) -> Value:
-        decided = self.truth(self.eval(node.test))
-        if decided is True:
-            return self.eval(node.body)
-        if decided is False:
-            return self.eval(node.orelse)
-        return self.eval(node.body).join(self.eval(node.orelse))
+        test = self.eval(node.test)
+        decided = self.truth(test)
+        if decided is None:
+            return self.eval(node.body).join(self.eval(node.orelse))
+        chosen = self.eval(node.body if decided else node.orelse)
+        # Chosen by an overridable default (``None if args.trace is None else path``): what
+        # runs by default, itself only a default, so a later ``if`` on it explores both ways.
+        return soften(chosen) if test.soft else chosen
 
     def e_Tuple(self, node: ast.Tuple | ast.List) -> Value:
         kind = "tuple" if isinstance(node, ast.Tuple) else "list"
@@ -218,20 +220,26 @@ class ExpressionSemantics:
     def _call_per_row(self, node: ast.Call) -> Value | None:
         """A creation call in the body of a loop over a written-out table, evaluated once per
         row with the loop variables its arguments read bound to that row's values, so that
-        each entity gets its own name, type and callback (:mod:`.rows`); ``None`` when the
+        each entity gets its own name, type and callback (:mod:`.rows`); likewise a
+        ``setattr`` whose name is such a variable, so that each key gets its own value (a
+        table longer than a value holds would leave the name unknown). ``None`` when the
         call is not one (evaluated once, as usual)."""
         frame = self.frame
         arguments = [*node.args, *(kw.value for kw in node.keywords)]
+        setter = self._is_setattr(node)
+        if setter:  # ``setattr(cfg, key, node.get_parameter(key).value)``: split by the name
+            arguments = node.args[:2]
         if not arguments or not all(self._pure_test(arg) for arg in arguments):
             return None
-        read = {n.id for arg in arguments for n in ast.walk(arg) if isinstance(n, ast.Name)}
+        named = arguments[1:] if setter else arguments  # a setter is split by its name alone
+        read = {n.id for arg in named for n in ast.walk(arg) if isinstance(n, ast.Name)}
         best: tuple[int, LoopRows] | None = None
         for loop, table in frame.loop_rows.items():
             used = read.intersection(table.names)
             if used and all(self._holder(n).get(n) is v for n, v in zip(table.names, table.bound)) \
                     and (best is None or len(used) > len(read.intersection(best[1].names))):
                 best = (loop, table)
-        if best is None or not self._creates(self.eval(node.func)):
+        if best is None or not (setter or self._creates(self.eval(node.func))):
             return None
         loop, table = best
         holders = [self._holder(name) for name in table.names]
@@ -248,6 +256,13 @@ class ExpressionSemantics:
                 holder[name] = value
             frame.row = None
         return out
+
+    def _is_setattr(self, node: ast.Call) -> bool:
+        """``setattr(obj, name, value)`` with the builtin: a store by name, which a loop over
+        a written-out table makes once per row (each key with the value the row gives it)."""
+        return isinstance(node.func, ast.Name) and node.func.id == "setattr" and len(node.args) == 3 \
+            and not node.keywords and not any(isinstance(a, ast.Starred) for a in node.args) \
+            and self.load_name("setattr") == atoms([Extern("builtins.setattr")])
 
     def _holder(self, name: str) -> dict[str, Value]:
         """Where ``name`` lives here: the innermost comprehension binding it, else the frame."""
@@ -379,6 +394,7 @@ class ExpressionSemantics:
         if isinstance(node.func, ast.Name) and node.func.id == "super" \
                 and self.load_name("super") == atoms([Extern("builtins.super")]):
             return self.super_value(node)
+        holder = BOTTOM  # what a method is called on
         if isinstance(node.func, ast.Attribute):
             holder = self.eval(node.func.value)
             if node.func.attr in SAME_TEXT and not node.args and not node.keywords and holder.origin is not None \
@@ -411,6 +427,11 @@ class ExpressionSemantics:
                     star = True
         result = self.call(func, Args(args, kwargs, star), node)
         target = node.func
+        if isinstance(target, ast.Attribute) and target.attr == "get" and holder.is_top \
+                and len(args) == 2 and not kwargs and not star:
+            # ``config.get('cmd_topic', '/cmd_vel')`` on a mapping read from a file: the
+            # default where the key is missing, unknown otherwise (the default kept beside it).
+            result = result.join(args[1])
         if isinstance(target, ast.Attribute) and target.attr in MUTATORS and not star \
                 and isinstance(target.value, (ast.Name, ast.Attribute)):
             holder = self.eval(target.value)

@@ -19,11 +19,11 @@ from .engine import MAX_BLOCK_VISITS, WIDEN_AFTER, Analysis, Task
 from .frame import Env, Frame
 from .program import Module
 from .rows import LoopRows, rows_of
-from .values import (BOTTOM, TOP, ClassAtom, Coll, DictAtom, Extern, FuncAtom, ModuleAtom, Obj, Record,
-                     Seq, Value, atoms, const, join_all)
+from .values import (BOTTOM, MAX_ATOMS, TOP, ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom,
+                     ModuleAtom, Obj, Record, Seq, Value, atoms, const, join_all)
 from .attrflow import AttributeFlow, join_remembered
 from .calls import CallSemantics
-from .containers import with_item
+from .containers import may_be_filled_elsewhere, with_item
 from .expressions import ExpressionSemantics
 from .fieldclasses import Field
 from .fixtures import Fixtures
@@ -173,6 +173,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     decided = self.truth(value, by_default=False)
                     if decided is not None and decided != edge.polarity:
                         continue
+                    targets.append((edge.target, self._narrowed(out, edge, block, cfg)))
+                    continue
                 targets.append((edge.target, out))
             for handler in block.exc_succs:
                 targets.append((handler, states[bid]))
@@ -195,6 +197,40 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 if target not in queued:
                     queued.add(target)
                     heapq.heappush(work, target)
+
+    def _narrowed(self, env: Env, edge, block, cfg: CFG) -> Env:
+        """``env`` past a guard that holds a local to known texts or numbers: after ``if x
+        not in ALLOWED: raise`` (or ``return``) ``x`` is one of the constants ``ALLOWED``
+        lists, after ``if x != 'a': return`` it is ``'a'``. Only where the other way out of
+        the test leaves the function: a branch that joins the rest again would mix the
+        narrowed value with the original there and give it names it does not decide. Not a
+        setting from outside either (its origin names it for a launch file)."""
+        test = edge.test
+        if any(other is not edge and any(e.target != cfg.exit for e in cfg.blocks[other.target].succs)
+               for other in block.succs):
+            return env
+        if not (isinstance(test, ast.Compare) and len(test.ops) == 1
+                and isinstance(test.left, ast.Name) and test.left.id in env
+                and self._pure_test(test)):
+            return env
+        op = type(test.ops[0])
+        holds = edge.polarity if op in (ast.In, ast.Eq) else \
+            not edge.polarity if op in (ast.NotIn, ast.NotEq) else None
+        if not holds:
+            return env
+        right = self.eval(test.comparators[0])
+        listed = _listed_constants(right) if op in (ast.In, ast.NotIn) else right.consts()
+        current = env[test.left.id]
+        if not listed or current.origin is not None or (
+                current.consts() is not None and set(current.consts()) <= set(listed)):
+            return env
+        known = current.consts()
+        kept = [c for c in listed if known is None or c in known]
+        if not kept:
+            return env
+        narrowed = dict(env)
+        narrowed[test.left.id] = atoms((Const.of(c) for c in kept), current.soft)
+        return narrowed
 
     def _pure_test(self, test: ast.expr) -> bool:
         """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library
@@ -553,6 +589,26 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if constant is not None:
             return constant
         return atoms([Extern(qualname)])
+
+
+def _listed_constants(value: Value) -> list | None:
+    """The constants a container value lists, when every possibility is a tuple or list of
+    known items, or a dict literal of known keys, that code cannot fill elsewhere; else
+    ``None``."""
+    if value.is_top or value.is_bottom:
+        return None
+    out: list = []
+    for atom in value:
+        if isinstance(atom, Seq) and not may_be_filled_elsewhere(atom):
+            items = [item.consts() for item in atom.items]
+        elif isinstance(atom, DictAtom) and not may_be_filled_elsewhere(atom):
+            items = [key.consts() for key, _ in atom.items]
+        else:
+            return None
+        if any(found is None or len(found) != 1 for found in items):
+            return None
+        out.extend(found[0] for found in items if found[0] not in out)
+    return out if len(out) <= MAX_ATOMS else None
 
 
 def _listed_items(value: Value, length: int) -> tuple[Value, ...] | None:

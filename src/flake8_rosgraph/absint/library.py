@@ -93,7 +93,9 @@ class Ref:
     (a parameter whose value is only a default the environment may replace), "const"
     (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
     stored earlier on the object in parameter ``on`` under ``key``), "field" (a
-    field of the receiver record) or "constant" (the library constant a template names).
+    field of the receiver record), "constant" (the library constant a template names) or
+    "interface" (the message, service or action class a template names as
+    ``pkg/msg/Name``).
 
     ``input`` (``(on, key template)``, from ``input = {on = …, key = …}``) says that the
     value *is* a setting supplied from outside the program — the one the object in
@@ -139,9 +141,11 @@ def _ref(raw: Any, where: str) -> Ref:
             return Ref("field", raw["field"])
         if keys == {"constant"} and isinstance(raw["constant"], str):
             return Ref("constant", raw["constant"])
+        if keys == {"interface"} and isinstance(raw["interface"], str):
+            return Ref("interface", raw["interface"])
     raise StubError(f"{where}: expected a parameter name or one of {{arg=…}}, "
                     f"{{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, "
-                    f"{{field=…}}, {{constant=…}}; got {raw!r}")
+                    f"{{field=…}}, {{constant=…}}, {{interface=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)

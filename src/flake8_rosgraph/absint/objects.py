@@ -13,6 +13,7 @@ from .values import (BOTTOM, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, Dic
                      ExternBound, FuncAtom, ModuleAtom, Obj, Record, Seq, SuperAtom, Value, atoms,
                      const)
 from .calls import OBJECT_NEW, Args
+from .class_attrs import data_attribute_names
 from .enums import ENUM_BASES, MIXIN_BASES, member_names, member_site
 from .fieldclasses import FIELD_BASES, Field, decorated_fields, own_fields
 
@@ -34,7 +35,12 @@ class ObjectSemantics:
             return TOP
         out = BOTTOM
         for atom in value:
-            out = out.join(self._attr_of(atom, attr))
+            found = self._attr_of(atom, attr)
+            if found.is_bottom and value.soft:
+                # An overridable default without the attribute (``args.trace.resolve()``
+                # with ``--trace`` defaulting to None): the value given instead has it.
+                found = TOP
+            out = out.join(found)
             if out.is_top and out.is_saturated:
                 # Only the saturated ⊤ absorbs what the other atoms give: a ⊤ that keeps
                 # known names still takes theirs (stopping there made the result depend on
@@ -287,6 +293,24 @@ class ObjectSemantics:
                 self.an.write(("k", atom.cid, attr), value)
             elif isinstance(atom, ModuleAtom):
                 self.an.write(("g", atom.name, attr), value)
+
+    def store_any_attr(self, target: Value, value: Value) -> None:
+        """``setattr(target, name, value)`` with a name the analysis does not know: ``value``
+        joins every data attribute the workspace classes of ``target`` name in their source
+        (:mod:`.class_attrs`), so that none keeps its default as a sure value."""
+        for atom in () if target.is_top else target:
+            cls = atom.cls if isinstance(atom, Obj) else atom
+            if not isinstance(cls, ClassAtom):
+                continue
+            names: set[str] = set()
+            for klass in self.mro(cls):
+                if isinstance(klass, ClassAtom):
+                    names |= data_attribute_names(self.program.classes[klass.cid])
+            for attr in sorted(names):
+                if isinstance(atom, Obj):
+                    self.an.write(("a", atom.site, attr), value)
+                else:
+                    self.an.write(("k", atom.cid, attr), value)
 
     def _setters(self, obj: Obj, attr: str) -> list[int]:
         """The property setters ``obj.<attr> = …`` runs: those of the first workspace class

@@ -9,7 +9,9 @@ unknown altogether. Python runs the body once per row, each name with its own ty
 A loop whose iterable is a list or tuple of known rows (each as long as the target) keeps
 those rows beside the joined binding; a call that creates something and whose arguments
 read the loop variables (and call nothing) is then evaluated once per row, with the
-variables bound to that row's values (see ``ExpressionSemantics.e_Call``).
+variables bound to that row's values (see ``ExpressionSemantics.e_Call``); so is a
+``setattr(obj, key, value)`` whose ``key`` is a loop variable (a configuration filled from a
+table of parameter defaults), whatever its value calls.
 
 This module only reads values: which rows a loop target takes. The interpreter binds them.
 """

@@ -199,6 +199,17 @@ def _name_choices(value: Value) -> list[tuple[str | None, bool]]:
     return [(c, False) for c in _choices(value)]
 
 
+def unpaired_types(eff: Effect) -> list[str]:
+    """The types an entity may have when its call has several names too (a name -> type
+    table iterated in one loop): which goes with which is not known, and every pairing
+    would invent wrong entities, so the graph leaves the type unknown. Empty otherwise."""
+    kind, name_arg = ENTITY_KINDS[eff.kind]
+    types = fitting_types(interface_types(eff.arg("type")), kind)
+    if len(types) > 1 and len(_name_choices(eff.arg(name_arg))) > 1:
+        return [t for t in types if t is not None]
+    return []
+
+
 class GraphBuilder:
     def __init__(self, analysis: Analysis) -> None:
         self.analysis = analysis
@@ -370,9 +381,7 @@ class GraphBuilder:
             out = []
             written = dict(eff.texts).get(name_arg)
             choices = _name_choices(eff.arg(name_arg))
-            if len(choices) > 1 and len(types) > 1:
-                # Which type goes with which name is not known (a name -> type table iterated
-                # in one loop): every pairing would invent wrong entities.
+            if unpaired_types(eff):
                 types = [None]
             template = _name_template(eff.arg(name_arg), eff.arg("node"))
             for raw, partial in choices:
