@@ -69,6 +69,11 @@ Likewise a name a node hands, together with itself, to a library no stub models
 (``hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)``), and the names
 under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`).
 
+A node no launch file starts runs as written, and meets the launched programs run as
+written too (``ros2 run``): a name a launched node's code writes connects its end, and is
+a near name for it (a recogniser run on its own misspelling the ``speaking`` that the speech
+node's code writes, though the launch file starts that node in ``/robot``).
+
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
 of its own launch system, and with the nodes another launch file starts in
@@ -124,6 +129,7 @@ from .near_miss import NearMiss, NearMissFinder
 from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
+from .written import launched_names, written_graph
 
 
 class AbsenceRule(Rule):
@@ -152,8 +158,9 @@ class AbsenceRule(Rule):
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return
-        near_misses = _NearNames(NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)}),
-                                 once("unseen launches", graph, lambda: UnseenLaunches.of(graph)))
+        peers = {name: index.using(peer_kind, name) for name in index.names(peer_kind)}
+        near_misses = _NearNames(NearMissFinder(peers), once("unseen launches", graph, lambda: UnseenLaunches.of(graph)),
+                                 lambda: _with_launched_as_written(peers, graph, peer_kind))
         # An unknown name elsewhere may be this end's partner, and a launch file the analysis
         # cannot follow may remap the end itself; hardly so for a slip of the pen.
         def unknown_may_fill(ep: Endpoint) -> bool:
@@ -249,19 +256,48 @@ class _NearNames:
     name only for a slip of the pen — its ``old/gripper/command`` may well be remapped onto
     the ``/gripper/command`` it is one namespace token away from."""
 
-    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches) -> None:
+    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches,
+                 as_written: Callable[[], dict[str, list[Endpoint]]]) -> None:
         self.finder = finder
         self.unseen = unseen
+        self._as_written = as_written
+        self._written_finder: NearMissFinder | None = None
 
     def remapped_unseen(self, endpoint: Endpoint) -> bool:
         return self.unseen.may_rename(endpoint.node)
 
+    def _finder_for(self, endpoint: Endpoint) -> NearMissFinder:
+        """A node no launch file starts runs as written, beside the launched executables run as
+        written too (``ros2 run``): the names their code writes are near names for its ends."""
+        if endpoint.node.launch is not None:
+            return self.finder
+        if self._written_finder is None:
+            self._written_finder = NearMissFinder(self._as_written())
+        return self._written_finder
+
     def find(self, endpoint: Endpoint, accept: Callable[[Endpoint], bool] | None = None) -> NearMiss | None:
-        near = self.finder.find(endpoint, accept)
+        finder = self._finder_for(endpoint)
+        near = finder.find(endpoint, accept)
         if near is None or near.is_slip_of(endpoint) or not self.remapped_unseen(near.peer):
             return near
-        return self.finder.find(endpoint, lambda peer: (accept is None or accept(peer))
-                                and not self.remapped_unseen(peer))
+        return finder.find(endpoint, lambda peer: (accept is None or accept(peer))
+                           and not self.remapped_unseen(peer))
+
+
+def _with_launched_as_written(peers: dict[str, list[Endpoint]], graph: RosGraph,
+                              kind: str) -> dict[str, list[Endpoint]]:
+    """``peers`` (the judged graph's ends of ``kind`` by name) with the ends of every launched
+    node's code as written: what a node run as written meets when the launched programs run
+    as written too."""
+    written = written_graph(graph)
+    if written is None:
+        return peers
+    launched = launched_names(graph)
+    out = {name: list(ends) for name, ends in peers.items()}
+    for endpoint in EndpointIndex.build(written).endpoints(kind):
+        if id(endpoint.node) in launched:
+            out.setdefault(endpoint.entity.name or "", []).append(endpoint)
+    return out
 
 
 def _mostly_dangling(connected: list[Endpoint], unexplained: list[Endpoint]) -> frozenset[int]:
