@@ -1,4 +1,5 @@
-"""Programs that launch files start apart still meet when they run as written (``ros2 run``).
+"""What launch files say, and what they do not: programs they start apart still meet when they
+run as written (``ros2 run``), and a remap onto a name is not a claim on the names under it.
 
 The rules judge the system as the workspace's launch files start it; the pair rules (ROS005,
 ROS007) also judge the nodes under the names their code gives them, and the absence rules take
@@ -177,3 +178,98 @@ def test_a_misspelt_name_of_a_launched_program_is_named_as_it_is_written(tmp_pat
 def test_the_name_a_launched_program_writes_is_quiet(tmp_path: Path) -> None:
     """The twin: spelt right, the recogniser's subscription meets the speech node's code."""
     assert findings(voice_workspace(tmp_path), ["ROS003"]) == []
+
+
+# -- a name under the one a launch file remaps an installed program onto is not that program's ----
+BASE_DRIVER = """
+    import rclpy
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    from rclpy.node import Node
+
+
+    class BaseDriver(Node):
+        def __init__(self):
+            super().__init__('base_driver')
+            self.odom = self.create_publisher(Odometry, 'odom/wheels', 10)
+            self.create_subscription(Twist, 'cmd_vel', self.drive, 10)
+
+        def drive(self, msg):
+            self.odom.publish(Odometry())
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(BaseDriver())
+"""
+
+MONITOR = """
+    import rclpy
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    from rclpy.node import Node
+    from sensor_msgs.msg import CompressedImage
+
+
+    class Monitor(Node):
+        def __init__(self):
+            super().__init__('monitor')
+            self.create_subscription(Odometry, '{wheels}', self.on_wheels, 10)
+            self.create_subscription(Odometry, '/odom', self.on_fused, 10)
+            self.create_subscription(CompressedImage, '/front_camera/image_raw/compressed', self.on_image, 10)
+            self.cmd = self.create_publisher(Twist, 'cmd_vel', 10)
+
+        def on_wheels(self, msg):
+            self.cmd.publish(Twist())
+
+        def on_fused(self, msg):
+            pass
+
+        def on_image(self, msg):
+            pass
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Monitor())
+"""
+
+ROVER_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='rover_base', executable='base_driver'),
+            Node(package='rover_base', executable='monitor'),
+            Node(package='robot_localization', executable='ekf_node',
+                 remappings=[('odometry/filtered', '/odom')]),
+            Node(package='usb_cam', executable='usb_cam_node_exe',
+                 remappings=[('image_raw', '/front_camera/image_raw')]),
+        ])
+"""
+
+
+def rover_workspace(root: Path, wheels: str) -> Path:
+    return write(root, {
+        **ament_python("rover_base", "'base_driver = rover_base.base_driver:main', "
+                                     "'monitor = rover_base.monitor:main'"),
+        "rover_base/rover_base/base_driver.py": BASE_DRIVER,
+        "rover_base/rover_base/monitor.py": MONITOR.format(wheels=wheels),
+        "rover_base/launch/rover.launch.py": ROVER_LAUNCH,
+    })
+
+
+def test_a_misspelt_name_under_a_remap_target_of_an_installed_program_is_reported(tmp_path: Path) -> None:
+    """The launch file remaps the installed EKF's output onto ``/odom``: that program uses
+    ``/odom``, not ``/odom/wheel``, which misspells the driver's ``/odom/wheels``."""
+    reported = findings(rover_workspace(tmp_path, "/odom/wheel"), ["ROS003"])
+    assert sites(reported) == [("ROS003", "rover_base/rover_base/monitor.py", 11)]
+    assert "did you mean '/odom/wheels'" in reported[0][3]
+
+
+def test_the_remap_target_and_its_transport_topics_are_the_installed_programs(tmp_path: Path) -> None:
+    """The twin: spelt right; ``/odom`` is the EKF's, and the compressed image one token under
+    the camera's remapped ``/front_camera/image_raw`` is its image_transport topic."""
+    assert findings(rover_workspace(tmp_path, "/odom/wheels"), ["ROS003"]) == []

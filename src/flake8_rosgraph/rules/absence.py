@@ -64,7 +64,9 @@ absolute name a launch file hands such a node as a parameter value
 
 A name a launch file remaps such a node of unseen code onto (``teleop_twist_joy``
 started with ``('/cmd_vel', '/cmd_vel_intuitive')``) is not dangling at all: the
-launch file says that program uses it, and it is the other end the analysis cannot see.
+launch file says that program uses it, and it is the other end the analysis cannot see;
+so is a transport plugin's topic one token under it (``/front_camera/image_raw/compressed``),
+but not any other name under it (a remap onto ``/odom`` says nothing of ``/odom/wheels``).
 Likewise a name a node hands, together with itself, to a library no stub models
 (``hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)``), and the names
 under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`).
@@ -123,7 +125,7 @@ from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
-from .launch_context import (UnseenLaunches, controller_namespaces, under_any, unseen_code_names,
+from .launch_context import (UnseenLaunches, controller_namespaces, transported, under_any, unseen_code_names,
                              unseen_parameter_names, unseen_remap_targets)
 from .near_miss import NearMiss, NearMissFinder
 from .shared import once
@@ -147,14 +149,15 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph)
-                      | controller_namespaces(graph))
+        unseen = once("unseen names", graph, lambda: unseen_code_names(graph) | controller_namespaces(graph))
+        remapped = once("unseen remap targets", graph, lambda: unseen_remap_targets(graph))
         configured = once("unseen parameter names", graph, lambda: unseen_parameter_names(graph))
         peer_kind = PEER_KIND[self.kind]
         scopes = once("launch scopes", graph, lambda: LaunchScopes(graph.systems))
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                       and not under_any(ep.entity.name, unseen) and ep.entity.name not in configured
+                       and not under_any(ep.entity.name, unseen) and not transported(ep.entity, remapped)
+                       and ep.entity.name not in configured
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return
