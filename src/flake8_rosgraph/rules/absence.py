@@ -64,10 +64,17 @@ absolute name a launch file hands such a node as a parameter value
 
 A name a launch file remaps such a node of unseen code onto (``teleop_twist_joy``
 started with ``('/cmd_vel', '/cmd_vel_intuitive')``) is not dangling at all: the
-launch file says that program uses it, and it is the other end the analysis cannot see.
+launch file says that program uses it, and it is the other end the analysis cannot see;
+so is a transport plugin's topic one token under it (``/front_camera/image_raw/compressed``),
+but not any other name under it (a remap onto ``/odom`` says nothing of ``/odom/wheels``).
 Likewise a name a node hands, together with itself, to a library no stub models
 (``hbba_lite.OnOffHbbaSubscriber(self, Image, 'image_raw', ...)``), and the names
 under it: that library makes the end (:mod:`~flake8_rosgraph.graph.unseen_calls`).
+
+A node no launch file starts runs as written, and meets the launched programs run as
+written too (``ros2 run``): a name a launched node's code writes connects its end, and is
+a near name for it (a recogniser run on its own misspelling the ``speaking`` that the speech
+node's code writes, though the launch file starts that node in ``/robot``).
 
 A name a launch file changed (namespace, remap) is an interface toward the
 nodes that launch file does not start: it is compared only with the nodes
@@ -118,12 +125,13 @@ from ..launch.instantiate import LaunchScopes
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames, for_a_tool
 from .infrastructure import infrastructure_slip
-from .launch_context import (UnseenLaunches, controller_namespaces, under_any, unseen_code_names,
+from .launch_context import (UnseenLaunches, controller_namespaces, transported, under_any, unseen_code_names,
                              unseen_parameter_names, unseen_remap_targets)
 from .near_miss import NearMiss, NearMissFinder
 from .shared import once
 from .topics import Endpoint, EndpointIndex, namespace_of
 from .vocabulary import NAME_NOUN, VERB, name_origin, origin_related, related
+from .written import launched_names, written_graph
 
 
 class AbsenceRule(Rule):
@@ -141,19 +149,21 @@ class AbsenceRule(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         exempt = ExemptNames.build(config.external_names)
-        unseen = once("unseen names", graph, lambda: unseen_remap_targets(graph) | unseen_code_names(graph)
-                      | controller_namespaces(graph))
+        unseen = once("unseen names", graph, lambda: unseen_code_names(graph) | controller_namespaces(graph))
+        remapped = once("unseen remap targets", graph, lambda: unseen_remap_targets(graph))
         configured = once("unseen parameter names", graph, lambda: unseen_parameter_names(graph))
         peer_kind = PEER_KIND[self.kind]
         scopes = once("launch scopes", graph, lambda: LaunchScopes(graph.systems))
         # a node no launch file starts still meets a launched executable run as written
         unconnected = [ep for ep in index.endpoints(self.kind) if self._dangles(ep, index, exempt)
-                       and not under_any(ep.entity.name, unseen) and ep.entity.name not in configured
+                       and not under_any(ep.entity.name, unseen) and not transported(ep.entity, remapped)
+                       and ep.entity.name not in configured
                        and not (ep.node.launch is None and scopes.written_name(peer_kind, ep.entity.name))]
         if not unconnected:
             return
-        near_misses = _NearNames(NearMissFinder({name: index.using(peer_kind, name) for name in index.names(peer_kind)}),
-                                 once("unseen launches", graph, lambda: UnseenLaunches.of(graph)))
+        peers = {name: index.using(peer_kind, name) for name in index.names(peer_kind)}
+        near_misses = _NearNames(NearMissFinder(peers), once("unseen launches", graph, lambda: UnseenLaunches.of(graph)),
+                                 lambda: _with_launched_as_written(peers, graph, peer_kind))
         # An unknown name elsewhere may be this end's partner, and a launch file the analysis
         # cannot follow may remap the end itself; hardly so for a slip of the pen.
         def unknown_may_fill(ep: Endpoint) -> bool:
@@ -249,19 +259,48 @@ class _NearNames:
     name only for a slip of the pen — its ``old/gripper/command`` may well be remapped onto
     the ``/gripper/command`` it is one namespace token away from."""
 
-    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches) -> None:
+    def __init__(self, finder: NearMissFinder, unseen: UnseenLaunches,
+                 as_written: Callable[[], dict[str, list[Endpoint]]]) -> None:
         self.finder = finder
         self.unseen = unseen
+        self._as_written = as_written
+        self._written_finder: NearMissFinder | None = None
 
     def remapped_unseen(self, endpoint: Endpoint) -> bool:
         return self.unseen.may_rename(endpoint.node)
 
+    def _finder_for(self, endpoint: Endpoint) -> NearMissFinder:
+        """A node no launch file starts runs as written, beside the launched executables run as
+        written too (``ros2 run``): the names their code writes are near names for its ends."""
+        if endpoint.node.launch is not None:
+            return self.finder
+        if self._written_finder is None:
+            self._written_finder = NearMissFinder(self._as_written())
+        return self._written_finder
+
     def find(self, endpoint: Endpoint, accept: Callable[[Endpoint], bool] | None = None) -> NearMiss | None:
-        near = self.finder.find(endpoint, accept)
+        finder = self._finder_for(endpoint)
+        near = finder.find(endpoint, accept)
         if near is None or near.is_slip_of(endpoint) or not self.remapped_unseen(near.peer):
             return near
-        return self.finder.find(endpoint, lambda peer: (accept is None or accept(peer))
-                                and not self.remapped_unseen(peer))
+        return finder.find(endpoint, lambda peer: (accept is None or accept(peer))
+                           and not self.remapped_unseen(peer))
+
+
+def _with_launched_as_written(peers: dict[str, list[Endpoint]], graph: RosGraph,
+                              kind: str) -> dict[str, list[Endpoint]]:
+    """``peers`` (the judged graph's ends of ``kind`` by name) with the ends of every launched
+    node's code as written: what a node run as written meets when the launched programs run
+    as written too."""
+    written = written_graph(graph)
+    if written is None:
+        return peers
+    launched = launched_names(graph)
+    out = {name: list(ends) for name, ends in peers.items()}
+    for endpoint in EndpointIndex.build(written).endpoints(kind):
+        if id(endpoint.node) in launched:
+            out.setdefault(endpoint.entity.name or "", []).append(endpoint)
+    return out
 
 
 def _mostly_dangling(connected: list[Endpoint], unexplained: list[Endpoint]) -> frozenset[int]:

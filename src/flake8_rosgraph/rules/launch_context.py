@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any, Iterator
 
 from ..graph import names
-from ..graph.model import RosGraph, RosNode
+from ..graph.model import Entity, RosGraph, RosNode
 from ..launch.model import LaunchedNode, System
 
 #: Launch targets not tied to code: the node they start may be any of the package's.
@@ -195,6 +195,29 @@ def _package_folder(launch_path: str) -> str:
     if "launch" in parts:
         parts = parts[:len(parts) - 1 - parts[::-1].index("launch")]
     return "/".join(parts) + "/" if parts else ""
+
+
+#: Message types of the topics a transport plugin adds one token under the base topic of a
+#: program's image or point cloud (image_transport's ``/camera/image_raw/compressed``,
+#: ``/theora``, ``/ffmpeg``; point_cloud_transport's ``/draco``, ``/zstd``).
+TRANSPORT_TYPES = frozenset({
+    "sensor_msgs/msg/CompressedImage",
+    "theora_image_transport/msg/Packet",
+    "ffmpeg_image_transport_msgs/msg/FFMPEGPacket",
+    "point_cloud_interfaces/msg/CompressedPointCloud2",
+})
+
+
+def transported(entity: Entity, targets: frozenset[str]) -> bool:
+    """Whether ``entity`` is one of the names a launch file remaps a node of unseen code onto
+    (:func:`unseen_remap_targets`), or a transport plugin's topic one token under one of them
+    (its type a transport's, or unknown). Other names under a target are not that program's:
+    a remap onto ``/odom`` says nothing of ``/odom/wheels``."""
+    name = entity.name
+    if name is None:
+        return False
+    return name in targets or (name.rsplit("/", 1)[0] in targets
+                               and (entity.type is None or entity.type in TRANSPORT_TYPES))
 
 
 def under_any(name: str | None, roots: frozenset[str]) -> bool:

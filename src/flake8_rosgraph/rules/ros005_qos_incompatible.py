@@ -8,6 +8,10 @@ from .base import Finding, Rule, RuleConfig
 from .qos_compat import qos_errors
 from .topics import EndpointIndex
 from .vocabulary import related
+from .written import also_as_written
+
+#: What a finding only the nodes as written in code show adds (see :mod:`.written`).
+_AS_WRITTEN = " (when both run as written in code, `ros2 run`, without the launch files that start them apart)"
 
 
 class QosIncompatible(Rule):
@@ -53,7 +57,9 @@ class QosIncompatible(Rule):
     an object attribute (`self.qos.reliability = …`) makes that policy unknown,
     since the attribute keeps both profiles. The finding is at the
     subscription, which requests more than the publisher offers; the publisher
-    is the related location.
+    is the related location. Ends that launch files start apart (a namespace,
+    a remap) but that meet when both programs run as written (`ros2 run`) are
+    compared too: the message says so.
 
     ## Example
     ```python
@@ -78,6 +84,9 @@ class QosIncompatible(Rule):
     summary = "a publisher and a subscription of one topic have QoS that the middleware will refuse to match"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        yield from also_as_written(self._pairs, graph, config, _AS_WRITTEN)
+
+    def _pairs(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         for sub in index.endpoints("subscriptions"):
             if not sub.entity.qos:

@@ -10,6 +10,7 @@ from .base import Finding, Rule, RuleConfig
 from .fixtures import node_scope
 from .topics import Endpoint, EndpointIndex
 from .vocabulary import NAME_NOUN
+from .written import launched_names, written_graph
 
 
 #: Topics every node joins whatever system it belongs to: the log, parameter events and the
@@ -33,7 +34,11 @@ class DuplicateNodeName(Rule):
     (so one executable launched twice under one name is reported too).
     Nodes a launch file starts whose code is not in the workspace (components
     loaded into a container, installed executables) are compared by the name
-    and namespace the launch file gives them.
+    and namespace the launch file gives them. Programs also run as written
+    (`ros2 run`): two nodes whose code gives them one name, that talk to each
+    other as written, are reported at their creation sites though the launch
+    files start them under other names (a node name copied from the program
+    it talks to, hidden by `Node(..., name='tts')`).
 
     ## Why is this bad?
     ROS 2 does not enforce unique node names: both nodes start, but tools
@@ -91,12 +96,33 @@ class DuplicateNodeName(Rule):
             if node.fqn is not None:
                 groups[node.fqn].append(node)
         together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
-        for fqn in sorted(groups):
-            yield from self._duplicates(fqn, groups[fqn], together)
+        judged = [finding for fqn in sorted(groups) for finding in self._duplicates(fqn, groups[fqn], together)]
+        yield from judged
         reported: dict[Location, Finding] = {}
         for finding in self._launched_without_code(graph):  # an included file: its includers' too
             reported.setdefault(finding.location, finding)
         yield from (reported[location] for location in sorted(reported))
+        yield from self._as_written(graph, {finding.location for finding in judged})
+
+    def _as_written(self, graph: RosGraph, reported: set[Location]) -> Iterator[Finding]:
+        """Nodes whose code gives them one name, that run together as written (``ros2 run``: they
+        talk, or one file creates both) but that the launch files start under other names: the
+        launched system hides the clash, running the programs as written does not."""
+        written = written_graph(graph)
+        if written is None:
+            return
+        groups: dict[str, list[RosNode]] = defaultdict(list)
+        for node in written.nodes:
+            if node.fqn is not None:
+                groups[node.fqn].append(node)
+        runs_as = launched_names(graph)
+        duplicated = [fqn for fqn, nodes in groups.items()
+                      if len(nodes) > 1 and any(id(node) in runs_as for node in nodes)]
+        together = _LaunchedApart(written, duplicated, runs_as)
+        for fqn in sorted(duplicated):
+            for finding in self._duplicates(fqn, groups[fqn], together):
+                if finding.location not in reported:
+                    yield Finding(finding.location, self.code, finding.message + _AS_WRITTEN, finding.related)
 
     def _launched_without_code(self, graph: RosGraph) -> Iterator[Finding]:
         """Two nodes one launch file starts unconditionally under one name it gives in full,
@@ -226,6 +252,28 @@ class _Together:
         launch file starting both is reported above."""
         return a.location == b.location and a.launch is not None and b.launch is not None \
             and not set(self._systems.get(id(a), ())) & set(self._systems.get(id(b), ()))
+
+
+#: What a finding of :meth:`DuplicateNodeName._as_written` adds to say where the names clash.
+_AS_WRITTEN = " when started as written in code (`ros2 run`), without the launch files that rename them"
+
+
+class _LaunchedApart(_Together):
+    """Nodes of one written name that run together as written, and that no launch file starts
+    under one name (the judged graph compares those): launch renames them apart."""
+
+    def __init__(self, written: RosGraph, duplicated: list[str],
+                 runs_as: dict[int, frozenset[str | None]]) -> None:
+        super().__init__(written, duplicated)
+        self._runs_as = runs_as
+
+    def pairs(self, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
+        for reason, a, b in super().pairs(nodes):
+            if not (self._names(a) & self._names(b)) - {None}:
+                yield reason, a, b
+
+    def _names(self, node: RosNode) -> frozenset[str | None]:
+        return self._runs_as.get(id(node), frozenset({node.fqn}))
 
 
 def _chained(reason: str, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
