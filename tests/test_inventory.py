@@ -8,16 +8,7 @@ from flake8_rosgraph import inventory, metadata, workspace
 from flake8_rosgraph.cache import workspace_inputs
 from flake8_rosgraph.cpp.sources import cpp_sources
 
-PACKAGE_XML = """<?xml version="1.0"?>
-<package format="3">
-  <name>{name}</name>
-  <version>0.1.0</version>
-  <description>{name}</description>
-  <maintainer email="dev@example.com">dev</maintainer>
-  <license>Apache-2.0</license>
-  <buildtool_depend>{build}</buildtool_depend>
-</package>
-"""
+from test_workspace_discovery import PACKAGE_XML
 
 TALKER = """import rclpy
 from rclpy.node import Node
