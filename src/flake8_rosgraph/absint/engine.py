@@ -20,6 +20,11 @@ module and the function that consumed the budget.  The order of work stays one q
 for the whole program (results where nothing overspends are those of a plain
 worklist).  The account is the unit a per-module cache would key on.
 
+Tasks run in queue order, except a call's task (and a module whose names are read), which
+runs on the spot when it has never run: the caller then reads a finished return value (or
+the module's names, as ``import`` runs a module before its names are read) instead of ⊥,
+and need not run again once it is finished (see :meth:`Analysis.run_now`).
+
 Entry points are all module top levels, then every module-level function nobody
 called (library code may call it), then every callable a library model says it calls
 back later, then every leaf class derived from a library class marked ``entry`` that
