@@ -119,9 +119,10 @@ def shared(root: str | os.PathLike[str]) -> Iterator[Inventory]:
     if current is not None and current.covers(top):
         yield current
         return
-    token = _CURRENT.set(Inventory(top))
+    inventory = Inventory(top)
+    token = _CURRENT.set(inventory)
     try:
-        yield _CURRENT.get()  # type: ignore[misc]
+        yield inventory
     finally:
         _CURRENT.reset(token)
 

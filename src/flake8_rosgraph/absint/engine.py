@@ -151,8 +151,6 @@ class Analysis:
         self.reached_calls: dict[Task, set[tuple[str, int, int]]] = {}
         self.diagnostics: list[Diagnostic] = []
         self._known: set[Task] = set()
-        #: Modules whose top level has run (their globals are read as they are).
-        self._modules_run: set[str] = set()
         #: Accounts by module name; the work queue; the account each queued task is charged to.
         self.accounts: dict[str, Account] = {}
         self._queue: deque[Task] = deque()
@@ -181,14 +179,15 @@ class Analysis:
 
     # -- heap -----------------------------------------------------------------------------
     def read(self, key: Hashable, task: Task) -> Value:
-        if key[0] == "g" and key[1] not in self._modules_run:
+        if key[0] == "g":
             module = ("mod", key[1], ())
-            if module not in self._known:
-                self.enqueue(module)  # a module needed only for its globals
-            # Python runs a module before anything reads its names: so does the analysis, on the
-            # spot (before ``task`` reads, so its writes need not run ``task`` again), unless that
-            # module is running (an import cycle) or the nesting is too deep.
-            self.run_now(module)
+            if module not in self.effects:  # its top level has not run
+                if module not in self._known:
+                    self.enqueue(module)  # a module needed only for its globals
+                # Python runs a module before anything reads its names: so does the analysis, on
+                # the spot (before ``task`` reads, so its writes need not run ``task`` again),
+                # unless that module is running (an import cycle) or the nesting is too deep.
+                self.run_now(module)
         readers = self.readers.get(key)
         if readers is None:
             readers = self.readers[key] = {}
@@ -358,8 +357,6 @@ class Analysis:
             self._current = outer
         self.effects[task] = effects
         self.calls[task] = calls
-        if task[0] == "mod":
-            self._modules_run.add(task[1])
         if task[0] == "fn" and any(e.kind not in FACT_KINDS for e in effects.values()):
             self._effectful.add(task[1])
         if falls_off:

@@ -206,12 +206,12 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         narrowed value with the original there and give it names it does not decide. Not a
         setting from outside either (its origin names it for a launch file)."""
         test = edge.test
-        if any(other is not edge and any(e.target != cfg.exit for e in cfg.blocks[other.target].succs)
-               for other in block.succs):
-            return env
         if not (isinstance(test, ast.Compare) and len(test.ops) == 1
                 and isinstance(test.left, ast.Name) and test.left.id in env
                 and self._pure_test(test)):
+            return env
+        if any(other is not edge and any(e.target != cfg.exit for e in cfg.blocks[other.target].succs)
+               for other in block.succs):
             return env
         op = type(test.ops[0])
         holds = edge.polarity if op in (ast.In, ast.Eq) else \

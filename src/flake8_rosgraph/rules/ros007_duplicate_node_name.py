@@ -91,10 +91,7 @@ class DuplicateNodeName(Rule):
     summary = "two nodes that can run together resolve to the same fully qualified name"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
-        groups: dict[str, list[RosNode]] = defaultdict(list)
-        for node in graph.nodes:
-            if node.fqn is not None:
-                groups[node.fqn].append(node)
+        groups = _by_name(graph)
         together = _Together(graph, [fqn for fqn, nodes in groups.items() if len(nodes) > 1])
         judged = [finding for fqn in sorted(groups) for finding in self._duplicates(fqn, groups[fqn], together)]
         yield from judged
@@ -111,10 +108,7 @@ class DuplicateNodeName(Rule):
         written = written_graph(graph)
         if written is None:
             return
-        groups: dict[str, list[RosNode]] = defaultdict(list)
-        for node in written.nodes:
-            if node.fqn is not None:
-                groups[node.fqn].append(node)
+        groups = _by_name(written)
         runs_as = launched_names(graph)
         duplicated = [fqn for fqn, nodes in groups.items()
                       if len(nodes) > 1 and any(id(node) in runs_as for node in nodes)]
@@ -274,6 +268,15 @@ class _LaunchedApart(_Together):
 
     def _names(self, node: RosNode) -> frozenset[str | None]:
         return self._runs_as.get(id(node), frozenset({node.fqn}))
+
+
+def _by_name(graph: RosGraph) -> dict[str, list[RosNode]]:
+    """The nodes of ``graph`` whose fully qualified name is known, by that name."""
+    groups: dict[str, list[RosNode]] = defaultdict(list)
+    for node in graph.nodes:
+        if node.fqn is not None:
+            groups[node.fqn].append(node)
+    return groups
 
 
 def _chained(reason: str, nodes: list[RosNode]) -> Iterator[tuple[str, RosNode, RosNode]]:
