@@ -222,10 +222,13 @@ class CallSemantics:
         frame = self.frame
         if node is None or not hasattr(node, "lineno"):
             return
+        conditional = self.conditional_here()
         frame.calls[(id(node), callee)] = CallSite(
             frame.module.path, node.lineno, frame.module.column(node), callee,
-            self.conditional_here(), frame.guarded, args, effects, node,
-            self._caught() if effects and frame.catching else ())
+            conditional, frame.guarded, args, effects, node,
+            self._caught() if effects and frame.catching else (),
+            conditional and frame.func is None and frame.cls is None
+            and any(first <= node.lineno <= last for first, last in frame.module.script_steps))
 
     def _caught(self) -> tuple[str, ...]:
         """What the ``except`` clauses around the current operation catch (see
