@@ -2,7 +2,9 @@
 over robot namespaces, one of them the empty root namespace, builds ``'/' + ns + '/cmd_vel'``
 only where ``ns`` is not empty, so no ``'//cmd_vel'`` is extracted (nor reported as an invalid
 name, ROS006); the same for ``if ns:``, ``x is not None``, ``x not in (...)``, ``not x`` and
-``a and b``. Twins: a comparison with a value the run may replace rules nothing out, and a
+``a and b``. A loop over a written-out table evaluates a creation call once per row that
+reaches it: ``if not enabled: continue`` skips the disabled rows, and the others keep their
+own types. Twins: a comparison with a value the run may replace rules nothing out, and a
 loop over a table keeps its rows where no test narrows the loop variable."""
 from __future__ import annotations
 
@@ -147,3 +149,45 @@ def test_a_table_loop_without_a_test_on_its_variables_keeps_each_row(tmp_path: P
     streams = next(n for n in graph.nodes if n.fqn == "/streams")
     assert sorted((e.name, e.type) for e in streams.entities) == [
         ("/cmd_vel", "geometry_msgs/msg/Twist"), ("/status", "std_msgs/msg/String")]
+
+
+def test_a_table_loop_creates_only_the_rows_a_branch_lets_through(tmp_path: Path) -> None:
+    """``SENSORS`` lists a disabled stream: the loop skips it with ``continue`` (or creates
+    the others under ``if enabled and name is not None:``); each enabled row keeps its type."""
+    sensors = """
+        import rclpy
+        from geometry_msgs.msg import Twist
+        from rclpy.node import Node
+        from sensor_msgs.msg import Imu
+        from std_msgs.msg import String
+
+        SENSORS = [('/imu', Imu, True), ('/status', String, False), ('/cmd_vel', Twist, True),
+                   (None, String, True)]
+
+
+        class Streams(Node):
+            def __init__(self):
+                super().__init__('streams')
+                for name, kind, enabled in SENSORS:
+                    if not enabled or name is None:
+                        continue
+                    self.create_subscription(kind, name, self.on_message, 10)
+                for name, kind, enabled in SENSORS:
+                    if enabled and name is not None:
+                        self.create_publisher(kind, name + '/echo', 10)
+
+            def on_message(self, msg):
+                self.get_logger().info(str(msg))
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Streams())
+    """
+    root = _workspace(tmp_path, sensors)
+    streams = next(n for n in build_graph(root).nodes if n.fqn == "/streams")
+    assert sorted((e.kind, e.name, e.type) for e in streams.entities) == [
+        ("publishers", "/cmd_vel/echo", "geometry_msgs/msg/Twist"),
+        ("publishers", "/imu/echo", "sensor_msgs/msg/Imu"),
+        ("subscriptions", "/cmd_vel", "geometry_msgs/msg/Twist"),
+        ("subscriptions", "/imu", "sensor_msgs/msg/Imu")]

@@ -249,6 +249,8 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
             if value is not current:
                 out = dict(out) if out is env else out
                 out[name] = value
+                # for the rows of a table loop: what the loop bound, however often narrowed
+                self.frame.narrowed[(name, value)] = self.frame.narrowed.get((name, current), current)
         return out
 
     def _pure_test(self, test: ast.expr) -> bool:
