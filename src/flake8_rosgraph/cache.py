@@ -216,8 +216,13 @@ class InputDigests:
             write_signed(cache_dir / INPUT_INDEX, {"format": INPUT_INDEX_FORMAT, "files": self.seen}, secret)
 
 
+#: The files besides manifests and ignore markers whose content the C++ partner ends depend on.
+_CPP_KEY_SUFFIXES = CPP_SUFFIXES | {".msg", ".srv", ".action"}
+
+
 def _cpp_key(digests: InputDigests) -> str:
-    """The key of the C++ partner ends: the C++ files and the folders that make packages."""
+    """The key of the C++ partner ends: the C++ files, the folders that make packages, and the
+    interface files (a package's own ``msg/Status.msg`` names its C++ ``msg::Status``)."""
     from .cpp import memo as cpp_memo  # imported here: a warm run never needs the C++ front end
     from .workspace import IGNORE_MARKERS
 
@@ -225,7 +230,7 @@ def _cpp_key(digests: InputDigests) -> str:
                             f"{_parser_versions()}".encode())
     for rel in sorted(digests.current, key=_encoded):
         name = rel.rsplit("/", 1)[-1]
-        if os.path.splitext(name)[1] in CPP_SUFFIXES or name == "package.xml" or name in IGNORE_MARKERS:
+        if os.path.splitext(name)[1] in _CPP_KEY_SUFFIXES or name == "package.xml" or name in IGNORE_MARKERS:
             digest.update(_encoded(f"\0{rel}\0{digests.current[rel]}"))
     return digest.hexdigest()
 

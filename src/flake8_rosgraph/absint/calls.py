@@ -1041,7 +1041,6 @@ def _dotted(value: Value) -> list[str] | None:
     return sorted({f"{c}." if c else "" for c in consts})
 
 
-
 #: Filters usable in library-model key templates (``{param|filter}``).
 KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted}
 

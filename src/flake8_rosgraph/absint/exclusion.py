@@ -49,8 +49,8 @@ def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evalu
     if not differs or op not in (ast.Eq, ast.NotEq, ast.Is, ast.IsNot, ast.In, ast.NotIn):
         return []
     if op in (ast.Is, ast.IsNot):
-        if not (isinstance(right, ast.Constant) and right.value in (None, True, False)):
-            return []
+        if not (isinstance(right, ast.Constant) and any(right.value is c for c in (None, True, False))):
+            return []  # ``is`` compares identity: only the singletons are known to be one object
         singleton = right.value
         return [(name, lambda value: value is not singleton)]
     other = evaluate(right)

@@ -96,7 +96,7 @@ class Ref:
     stored earlier on the object in parameter ``on`` under ``key``), "field" (a
     field of the receiver record), "constant" (the library constant a template names) or
     "object" (the library object a template names in another spelling of its dotted path:
-    ``data`` is ``(template, separator, shape)``, see :meth:`.calls.Caller.named_object`).
+    ``data`` is ``(template, separator, shape)``, see :meth:`.calls.CallSemantics.named_object`).
 
     ``input`` (``(on, key template)``, from ``input = {on = …, key = …}``) says that the
     value *is* a setting supplied from outside the program — the one the object in
