@@ -1,8 +1,8 @@
 """A branch rules constants out of a local (``absint/exclusion.py``): a fleet bridge that loops
 over robot namespaces, one of them the empty root namespace, builds ``'/' + ns + '/cmd_vel'``
 only where ``ns`` is not empty, so no ``'//cmd_vel'`` is extracted (nor reported as an invalid
-name, ROS006); the same for ``if ns:``, ``x is not None``, ``x not in (...)``, ``not x`` and
-``a and b``. A loop over a written-out table evaluates a creation call once per row that
+name, ROS006); the same for ``if ns:`` (also ``if self.ns:`` right after storing it),
+``x is not None``, ``x not in (...)``, ``not x`` and ``a and b``. A loop over a written-out table evaluates a creation call once per row that
 reaches it: ``if not enabled: continue`` skips the disabled rows, and the others keep their
 own types. Twins: a comparison with a value the run may replace rules nothing out, and a
 loop over a table keeps its rows where no test narrows the loop variable."""
@@ -78,15 +78,33 @@ TELEOP = """
                 self.pub = self.create_publisher(Twist, '/' + prefix + '/cmd_vel', 10)
 
 
+    class Relay(Node):
+        '''Relays commands into the robot's namespace, or the root one when none is set.'''
+
+        def __init__(self):
+            super().__init__('relay')
+            self.robot_ns = self.declare_parameter('robot_ns', '').value
+            if self.robot_ns:
+                self.out = self.create_publisher(Twist, '/' + self.robot_ns + '/cmd_vel_out', 10)
+            else:
+                self.out = self.create_publisher(Twist, '/cmd_vel_out', 10)
+
+
     def main():
         rclpy.init()
         rclpy.spin(Teleop())
+
+
+    def relay():
+        rclpy.init()
+        rclpy.spin(Relay())
 """
 
 
 def _workspace(tmp_path: Path, bridge: str = BRIDGE) -> Path:
     return write(tmp_path, package("fleet_bridge", "'bridge = fleet_bridge.bridge:main', "
-                                                   "'teleop = fleet_bridge.teleop:main'",
+                                                   "'teleop = fleet_bridge.teleop:main', "
+                                                   "'relay = fleet_bridge.teleop:relay'",
                                    {"fleet": FLEET, "bridge": bridge, "teleop": TELEOP}))
 
 
@@ -98,6 +116,8 @@ def test_a_branch_builds_names_only_from_the_constants_it_lets_through(tmp_path:
                           ("subscriptions", "/turtle1/pose"), ("subscriptions", "/turtle2/pose")],
         # the prefixed publisher is made only for a prefix the run sets: its name is unknown
         "/teleop": [("publishers", "/cmd_vel"), ("publishers", "?")],
+        # the same with the prefix kept on the node: an attribute it just stored
+        "/relay": [("publishers", "/cmd_vel_out"), ("publishers", "?")],
     }
 
 

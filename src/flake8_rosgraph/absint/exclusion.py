@@ -1,4 +1,5 @@
-"""What a branch rules out: the constants a local cannot be on one way out of a test.
+"""What a branch rules out: the constants a local (or an attribute the function just stored,
+``self.ns``) cannot be on one way out of a test.
 
 ``for ns in ['', 'left', 'right']: if ns: create_publisher(T, '/' + ns + '/y', 10)``: Python
 takes the branch only for ``'left'`` and ``'right'``, so the name is never ``'//y'``. Without
@@ -27,19 +28,28 @@ Evaluate = Callable[[ast.expr], Value]
 MAX_RULED_OUT = 16
 
 
-def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate,
-              listed: Callable[[Value], list | None]) -> list[tuple[str, Keep]]:
-    """For each local ``test`` constrains when it evaluates to ``holds``: its name and which of
-    its constants remain possible. ``listed`` gives the constants a container value lists."""
-    if isinstance(test, ast.Name):
-        return [(test.id, lambda value: bool(value) == holds)]
+#: The environment entry an expression reads (a local's name, or the key under which the
+#: function remembers an attribute it stored: :mod:`.attrflow`), else ``None``.
+Slot = Callable[[ast.expr], "str | None"]
+
+
+def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate, listed: Callable[[Value], list | None],
+              slot: Slot) -> list[tuple[str, Keep]]:
+    """For each environment entry ``test`` constrains when it evaluates to ``holds``: its key
+    and which of its constants remain possible. ``listed`` gives the constants a container
+    value lists."""
+    tested = slot(test)
+    if tested is not None:
+        return [(tested, lambda value: bool(value) == holds)]
     if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
-        return ruled_out(test.operand, not holds, evaluate, listed)
+        return ruled_out(test.operand, not holds, evaluate, listed, slot)
     if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And) == holds:
         # ``a and b`` holds: both hold; ``a or b`` fails: both fail.
-        return [found for operand in test.values for found in ruled_out(operand, holds, evaluate, listed)]
-    if isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.left, ast.Name):
-        return _compared(test.left.id, type(test.ops[0]), test.comparators[0], holds, evaluate, listed)
+        return [found for operand in test.values for found in ruled_out(operand, holds, evaluate, listed, slot)]
+    if isinstance(test, ast.Compare) and len(test.ops) == 1:
+        compared = slot(test.left)
+        if compared is not None:
+            return _compared(compared, type(test.ops[0]), test.comparators[0], holds, evaluate, listed)
     return []
 
 

@@ -21,7 +21,7 @@ from .program import Module
 from .rows import LoopRows, rows_of
 from .values import (BOTTOM, MAX_ATOMS, TOP, ClassAtom, Coll, Const, DictAtom, Extern, FuncAtom,
                      ModuleAtom, Obj, Record, Seq, Value, atoms, const, join_all)
-from .attrflow import AttributeFlow, join_remembered
+from .attrflow import AttributeFlow, join_remembered, key as attribute_key
 from .calls import CallSemantics
 from .containers import may_be_filled_elsewhere, with_item
 from .exclusion import narrowed, ruled_out
@@ -241,7 +241,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         """``env`` without the constants a local cannot be when ``test`` evaluates to ``holds``
         (:mod:`.exclusion`): the ``else`` of ``if x == ''``, the body of ``if ns:``."""
         out = env
-        for name, keep in ruled_out(test, holds, self.eval, _listed_constants):
+        for name, keep in ruled_out(test, holds, self.eval, _listed_constants, self._slot):
             current = out.get(name)
             if current is None:
                 continue
@@ -252,6 +252,15 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                 # for the rows of a table loop: what the loop bound, however often narrowed
                 self.frame.narrowed[(name, value)] = self.frame.narrowed.get((name, current), current)
         return out
+
+    def _slot(self, expr: ast.expr) -> str | None:
+        """The environment entry ``expr`` reads: a local, or an attribute this function
+        remembers storing (``self.ns`` right after ``self.ns = …``, :mod:`.attrflow`)."""
+        if isinstance(expr, ast.Name):
+            return expr.id
+        if isinstance(expr, ast.Attribute) and self.remembered_attribute(expr) is not None:
+            return attribute_key(expr.value.id, expr.attr)  # remembered: ``expr.value`` is a name
+        return None
 
     def _pure_test(self, test: ast.expr) -> bool:
         """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library
