@@ -2,7 +2,8 @@
 over robot namespaces, one of them the empty root namespace, builds ``'/' + ns + '/cmd_vel'``
 only where ``ns`` is not empty, so no ``'//cmd_vel'`` is extracted (nor reported as an invalid
 name, ROS006); the same for ``if ns:`` (also ``if self.ns:`` right after storing it),
-``x is not None``, ``x not in (...)``, ``not x`` and ``a and b``. A loop over a written-out table evaluates a creation call once per row that
+``x is not None``, ``x not in (...)``, ``not x`` and ``a and b``, and in the branches of
+``a if test else b`` (also in a comprehension). A loop over a written-out table evaluates a creation call once per row that
 reaches it: ``if not enabled: continue`` skips the disabled rows, and the others keep their
 own types. Twins: a comparison with a value the run may replace rules nothing out, and a
 loop over a table keeps its rows where no test narrows the loop variable."""
@@ -45,6 +46,9 @@ BRIDGE = """
                     self.cmd[robot] = self.create_publisher(Twist, '/' + robot + '/cmd_vel', 10)
                 if robot:
                     self.create_subscription(Pose, f'/{robot}/pose', self.on_pose, 10)
+            odometry = ['/' + robot + '/odom' if robot else '/odom' for robot in fleet.ROBOTS]
+            for topic in odometry:
+                self.create_subscription(Pose, topic, self.on_pose, 10)
             for camera in fleet.CAMERAS:
                 if camera is not None and camera not in ('rear',):
                     self.create_subscription(Image, f'/{camera}/image_raw', self.on_image, 10)
@@ -113,7 +117,9 @@ def test_a_branch_builds_names_only_from_the_constants_it_lets_through(tmp_path:
     assert entities(root, TOPICS) == {
         "/fleet_bridge": [("publishers", "/cmd_vel"), ("publishers", "/turtle1/cmd_vel"),
                           ("publishers", "/turtle2/cmd_vel"), ("subscriptions", "/front/image_raw"),
-                          ("subscriptions", "/turtle1/pose"), ("subscriptions", "/turtle2/pose")],
+                          ("subscriptions", "/odom"), ("subscriptions", "/turtle1/odom"),
+                          ("subscriptions", "/turtle1/pose"), ("subscriptions", "/turtle2/odom"),
+                          ("subscriptions", "/turtle2/pose")],
         # the prefixed publisher is made only for a prefix the run sets: its name is unknown
         "/teleop": [("publishers", "/cmd_vel"), ("publishers", "?")],
         # the same with the prefix kept on the node: an attribute it just stored

@@ -96,3 +96,24 @@ def narrowed(value: Value, keep: Keep) -> Value:
     if not kept:  # every default ruled out (the branch is not taken by default): unknown
         return Value(None, origin=value.origin)
     return Value(kept, value.soft, origin=value.origin)  # a subset: within the bounds
+
+
+def narrow(scopes: list[dict], rules: list[tuple[str, Keep]], narrowings: dict) -> list[dict]:
+    """``scopes`` (innermost first) with each rule applied to the innermost scope that holds its
+    name; a scope that changes is a copy, the others are the same dicts. ``narrowings`` learns
+    each narrowed value, as ``(name, narrowed value) -> the value it narrowed`` (the first one
+    when a value is narrowed again): a loop over a table still knows which rows it holds."""
+    out = list(scopes)
+    for name, keep in rules:
+        for index, scope in enumerate(out):
+            if name not in scope:
+                continue
+            current = scope[name]
+            value = narrowed(current, keep)
+            if value is not current:
+                if scope is scopes[index]:
+                    out[index] = scope = dict(scope)
+                scope[name] = value
+                narrowings[(name, value)] = narrowings.get((name, current), current)
+            break
+    return out

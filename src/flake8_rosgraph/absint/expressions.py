@@ -13,6 +13,7 @@ from .folding import BINOPS, CMPOPS, SAME_TEXT, UNARYOPS, fold
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
+from .exclusion import narrow
 from .rows import LoopRows, rows_of
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
@@ -162,11 +163,26 @@ class ExpressionSemantics:
         test = self.eval(node.test)
         decided = self.truth(test)
         if decided is None:
-            return self.eval(node.body).join(self.eval(node.orelse))
+            return self._in_branch(node.test, node.body, True).join(self._in_branch(node.test, node.orelse, False))
         chosen = self.eval(node.body if decided else node.orelse)
         # Chosen by an overridable default (``None if args.trace is None else path``): what
         # runs by default, itself only a default, so a later ``if`` on it explores both ways.
         return soften(chosen) if test.soft else chosen
+
+    def _in_branch(self, test: ast.expr, expr: ast.expr, holds: bool) -> Value:
+        """``expr`` where ``test`` evaluated to ``holds`` (``'/' + ns + '/odom' if ns else
+        '/odom'``): without the constants the test rules out there (:mod:`.exclusion`). Only
+        for a pure test and branch, which write nothing the environment would have to keep."""
+        frame = self.frame
+        env, overlays = frame.env, frame.comp
+        if not (self._writes_nothing(test) and self._writes_nothing(expr)):
+            return self.eval(expr)
+        *inner, frame.env = narrow([*reversed(overlays), env], self._ruled_out(test, holds), frame.narrowed)
+        frame.comp = inner[::-1]  # a comprehension's variables: ``'/' + r if r else '/'`` for r in …
+        try:
+            return self.eval(expr)
+        finally:
+            frame.env, frame.comp = env, overlays
 
     def e_Tuple(self, node: ast.Tuple | ast.List) -> Value:
         kind = "tuple" if isinstance(node, ast.Tuple) else "list"
@@ -229,7 +245,7 @@ class ExpressionSemantics:
         setter = self._is_setattr(node)
         if setter:  # ``setattr(cfg, key, node.get_parameter(key).value)``: split by the name
             arguments = node.args[:2]
-        if not arguments or not all(self._pure_test(arg) for arg in arguments):
+        if not arguments or not all(self._writes_nothing(arg) for arg in arguments):
             return None
         named = arguments[1:] if setter else arguments  # a setter is split by its name alone
         read = {n.id for arg in named for n in ast.walk(arg) if isinstance(n, ast.Name)}

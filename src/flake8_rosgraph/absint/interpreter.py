@@ -24,7 +24,7 @@ from .values import (BOTTOM, MAX_ATOMS, TOP, ClassAtom, Coll, Const, DictAtom, E
 from .attrflow import AttributeFlow, join_remembered, key as attribute_key
 from .calls import CallSemantics
 from .containers import may_be_filled_elsewhere, with_item
-from .exclusion import narrowed, ruled_out
+from .exclusion import narrow, ruled_out
 from .expressions import ExpressionSemantics
 from .fieldclasses import Field
 from .fixtures import Fixtures
@@ -33,7 +33,7 @@ from .objects import ObjectSemantics
 from .typetests import isinstance_value
 
 BUILTIN_NAMES = frozenset(dir(builtins))
-#: Expressions whose evaluation may change state (see ``Interpreter._pure_test``).
+#: Expressions whose evaluation may change state (see ``Interpreter._writes_nothing``).
 _IMPURE_IN_TESTS = (ast.Call, ast.NamedExpr, ast.Await, ast.Yield, ast.YieldFrom, ast.Lambda,
                     ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
@@ -54,7 +54,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         #: only those names can be fields (a cheap first test, see ``is_annotated``).
         self._annotated: set[str] = set()
         self._annotated_upto = 0
-        self._pure_tests: dict[int, bool] = {}  # id(branch test) -> see ``_pure_test``
+        self._pure_tests: dict[int, bool] = {}  # id(expression) -> see ``_writes_nothing``
         self._probes: dict[int, frozenset[str]] = {}  # id(function body) -> names it probes
         #: (id(call node), id(model), receiver absent) -> argument texts (see ``apply_model``)
         self._texts: dict[tuple[int, int, bool], dict[str, str]] = {}
@@ -209,11 +209,11 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         give it names it does not decide. Not a setting from outside either (its origin
         names it for a launch file)."""
         test = edge.test
-        if self._pure_test(test):
+        if self._writes_nothing(test):
             env = self._without_ruled_out(env, test, edge.polarity)
         if not (isinstance(test, ast.Compare) and len(test.ops) == 1
                 and isinstance(test.left, ast.Name) and test.left.id in env
-                and self._pure_test(test)):
+                and self._writes_nothing(test)):
             return env
         if any(other is not edge and any(e.target != cfg.exit for e in cfg.blocks[other.target].succs)
                for other in block.succs):
@@ -240,18 +240,10 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
     def _without_ruled_out(self, env: Env, test: ast.expr, holds: bool) -> Env:
         """``env`` without the constants a local cannot be when ``test`` evaluates to ``holds``
         (:mod:`.exclusion`): the ``else`` of ``if x == ''``, the body of ``if ns:``."""
-        out = env
-        for name, keep in ruled_out(test, holds, self.eval, _listed_constants, self._slot):
-            current = out.get(name)
-            if current is None:
-                continue
-            value = narrowed(current, keep)
-            if value is not current:
-                out = dict(out) if out is env else out
-                out[name] = value
-                # for the rows of a table loop: what the loop bound, however often narrowed
-                self.frame.narrowed[(name, value)] = self.frame.narrowed.get((name, current), current)
-        return out
+        return narrow([env], self._ruled_out(test, holds), self.frame.narrowed)[0]
+
+    def _ruled_out(self, test: ast.expr, holds: bool) -> list:
+        return ruled_out(test, holds, self.eval, _listed_constants, self._slot)
 
     def _slot(self, expr: ast.expr) -> str | None:
         """The environment entry ``expr`` reads: a local, or an attribute this function
@@ -263,13 +255,18 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         return None
 
     def _pure_test(self, test: ast.expr) -> bool:
-        """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library
+        """Whether a branch's test may be evaluated once for all its edges (a shortcut: it
+        gives what evaluating it again on each edge gives): when it writes nothing."""
+        return self._writes_nothing(test)
+
+    def _writes_nothing(self, expr: ast.expr) -> bool:
+        """Whether evaluating ``expr`` changes nothing its evaluation reads: no call (a library
         model may store what a later part reads, a container method mutates), no assignment,
         no ``await``/``yield``; so evaluating it again right after gives the same value."""
-        pure = self._pure_tests.get(id(test))
+        pure = self._pure_tests.get(id(expr))
         if pure is None:
-            pure = self._pure_tests[id(test)] = not any(
-                isinstance(node, _IMPURE_IN_TESTS) for node in ast.walk(test))
+            pure = self._pure_tests[id(expr)] = not any(
+                isinstance(node, _IMPURE_IN_TESTS) for node in ast.walk(expr))
         return pure
 
     @staticmethod
