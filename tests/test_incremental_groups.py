@@ -238,6 +238,8 @@ def test_the_facts_of_each_group_survive_the_json_round_trip(root: Path, monkeyp
     assert any(facts.nodes for facts in seen) and any(facts.launches for facts in seen)
     for facts in seen:
         assert facts_json.from_obj(json.loads(json.dumps(facts_json.to_obj(facts)))) == facts
+        entry = json.dumps({"key": "k", "facts": facts_json.to_obj(facts)})
+        assert facts_json.loads_entry(entry) == {"key": "k", "facts": facts}
 
 
 def test_what_the_format_cannot_hold_is_refused() -> None:
@@ -251,6 +253,19 @@ def test_what_the_format_cannot_hold_is_refused() -> None:
         facts_json.from_obj({"c": "os.system", "v": ["true"]})
     with pytest.raises(facts_json.NotAFact):
         facts_json.from_obj({"c": "graph.model.Location", "v": ["a.py", 1]})
+
+
+@pytest.mark.parametrize("facts", [
+    '{"c": "os.system", "v": ["true"]}',               # not a fact class
+    '{"c": "graph.model.Location", "v": ["a.py", 1]}',  # a value missing
+    '{"n": "1e999"}', '{"f": [[1]]}', '{"m": [[[1], 2]]}', '{"m": [[1]]}',
+    '{"t": [{"shell": "rm -rf /"}]}',                  # an untagged object inside
+])
+def test_an_entry_whose_facts_the_format_cannot_hold_is_refused(facts: str) -> None:
+    with pytest.raises(facts_json.NotAFact):
+        facts_json.loads_entry(f'{{"key": "k", "facts": {facts}}}')
+    with pytest.raises(facts_json.NotAFact):
+        facts_json.from_obj(json.loads(facts))
 
 
 def test_metadata_is_read_again_only_when_a_metadata_file_changes(root: Path, monkeypatch) -> None:

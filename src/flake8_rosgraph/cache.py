@@ -461,9 +461,10 @@ def signed_text(obj: dict[str, Any], secret: bytes) -> str:
     return f"{_signature(secret, body.encode('ascii')).decode('ascii')}\n{body}"
 
 
-def read_signed(path: Path, secret: bytes) -> dict[str, Any] | None:
-    """The JSON object stored at ``path`` when this user's secret signed it; ``None`` when it is
-    missing, unreadable, corrupt, too big or written by anyone else (untrusted)."""
+def read_signed(path: Path, secret: bytes, loads: Callable[[str], Any] = json.loads) -> dict[str, Any] | None:
+    """The JSON object stored at ``path`` when this user's secret signed it, parsed by ``loads``;
+    ``None`` when it is missing, unreadable, corrupt, too big or written by anyone else
+    (untrusted)."""
     try:
         data = read_bytes(path, path.parent, MAX_ENTRY_BYTES)
     except OSError:
@@ -472,8 +473,8 @@ def read_signed(path: Path, secret: bytes) -> dict[str, Any] | None:
     if not newline or not hmac.compare_digest(signature, _signature(secret, body)):
         return None
     try:
-        obj = json.loads(body.decode("ascii"))
-    except (ValueError, RecursionError):
+        obj = loads(body.decode("ascii"))
+    except (ValueError, TypeError, RecursionError):  # NotAFact is a ValueError
         return None
     return obj if isinstance(obj, dict) else None
 

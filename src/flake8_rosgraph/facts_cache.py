@@ -102,13 +102,10 @@ class FactsStore:
 
 
 def _read(entry: Path, key: str, secret: bytes) -> PythonFacts | None:
-    obj = read_signed(entry, secret)
+    obj = read_signed(entry, secret, facts_json.loads_entry)  # hostile facts: None, computed again
     if obj is None or obj.get("key") != key:
         return None  # missing, corrupt, foreign, or not for this key: computed again
-    try:
-        facts = facts_json.from_obj(obj["facts"])
-    except (ValueError, KeyError, TypeError, RecursionError):
-        return None  # hostile: computed again
+    facts = obj.get("facts")
     return facts if isinstance(facts, PythonFacts) else None
 
 

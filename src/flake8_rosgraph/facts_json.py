@@ -107,7 +107,7 @@ def from_obj(obj: Any) -> Any:
     if kind is not dict or len(obj) not in (1, 2):
         raise NotAFact("not an encoded fact")
     if "c" in obj:
-        return _instance(obj)
+        return _instance(obj, _items(_list(obj.get("v"))))
     if "n" in obj:
         if obj["n"] not in _NON_FINITE:
             raise NotAFact("not a non-finite number")
@@ -115,27 +115,27 @@ def from_obj(obj: Any) -> Any:
     if "t" in obj:
         return tuple(_items(_list(obj["t"])))
     if "f" in obj:
-        return frozenset(_items(_list(obj["f"])))
+        return _hashed(frozenset, _items(_list(obj["f"])))
     if "m" in obj:
         pairs = [_list(pair) for pair in _list(obj["m"])]
         if any(len(pair) != 2 for pair in pairs):
             raise NotAFact("not a key-value pair")
-        return {from_obj(k): from_obj(v) for k, v in pairs}
+        return _hashed(dict, [(from_obj(k), from_obj(v)) for k, v in pairs])
     raise NotAFact("not an encoded fact")
 
 
-def _instance(obj: dict) -> Any:
+def _instance(obj: dict, values: list) -> Any:
+    """The fact ``obj`` tags, from its field ``values`` (decoded)."""
     cls = _registry().get(obj["c"]) if isinstance(obj["c"], str) else None
     if cls is None:
         raise NotAFact(f"not a fact class: {obj['c']!r}")
     names = _FIELDS[cls][1]
-    values = _list(obj.get("v"))
     if len(values) != len(names):
         raise NotAFact(f"{obj['c']}: {len(values)} values for {len(names)} fields")
     try:
         if cls in _POSITIONAL:
-            return cls(*_items(values))
-        return cls(**dict(zip(names, _items(values))))
+            return cls(*values)
+        return cls(**dict(zip(names, values)))
     except TypeError as exc:  # a field without a default not stored: not a fact class
         raise NotAFact(str(exc)) from exc
 
@@ -149,3 +149,45 @@ def _list(obj: Any) -> list:
     if not isinstance(obj, list):
         raise NotAFact("not a list")
     return obj
+
+
+def loads_entry(text: str) -> dict:
+    """A JSON object whose members hold encoded facts (``{"key": …, "facts": to_obj(facts)}``),
+    with the facts decoded during the parse: what :func:`from_obj` of each member gives, about
+    twice as fast (an edited workspace reads every kept group's facts, on every pre-commit run).
+    :class:`NotAFact` for anything :func:`from_obj` refuses, and for an untagged object anywhere
+    but at the top."""
+    untagged: list[dict] = []
+
+    def decoded(obj: dict) -> Any:
+        size = len(obj)
+        if size == 2 and "c" in obj and "v" in obj:
+            return _instance(obj, _list(obj["v"]))
+        if size == 1:
+            if "t" in obj:
+                return tuple(_list(obj["t"]))
+            if "f" in obj:
+                return _hashed(frozenset, _list(obj["f"]))
+            if "m" in obj:
+                pairs = [_list(pair) for pair in _list(obj["m"])]
+                if any(len(pair) != 2 for pair in pairs):
+                    raise NotAFact("not a key-value pair")
+                return _hashed(dict, pairs)
+            if "n" in obj:
+                if obj["n"] not in _NON_FINITE:
+                    raise NotAFact("not a non-finite number")
+                return float(obj["n"])
+        untagged.append(obj)
+        return obj
+
+    top = json.loads(text, object_hook=decoded)
+    if len(untagged) != 1 or untagged[0] is not top:
+        raise NotAFact("not an object of encoded facts")
+    return top
+
+
+def _hashed(make: type, items: list) -> Any:
+    try:
+        return make(items)
+    except TypeError as exc:  # an unhashable member: no frozenset or dict the encoder wrote
+        raise NotAFact(str(exc)) from exc
