@@ -266,17 +266,21 @@ class Program:
         return sorted(tuple(sorted(group)) for group in groups.values()
                       if not group <= shared or not group <= copied)
 
-    def _imported_modules(self, name: str) -> set[str]:
-        """The workspace modules ``name``'s imports run: those named, and the packages above them."""
-        out = set()
-        for dotted in self.imports[name]:
-            parts = dotted.split(".")
-            for end in range(1, len(parts) + 1):
-                other = ".".join(parts[:end])
-                if other in self.modules:
-                    out.add(other)
-        out.discard(name)
-        return out
+    def _imported_modules(self, name: str) -> frozenset[str]:
+        """The workspace modules ``name``'s imports run: those named, and the packages above them
+        (worked out once: the grouping asks again for every module)."""
+        found = self._imported.get(name)
+        if found is None:
+            out = set()
+            for dotted in self.imports[name]:
+                parts = dotted.split(".")
+                for end in range(1, len(parts) + 1):
+                    other = ".".join(parts[:end])
+                    if other in self.modules:
+                        out.add(other)
+            out.discard(name)
+            found = self._imported[name] = frozenset(out)
+        return found
 
     def shared_modules(self) -> set[str]:
         """Modules each importing group analyses its own copy of (:meth:`components`).
@@ -324,6 +328,7 @@ class Program:
         self._collected: set[str] = set()
         self._star_memo: dict[str, frozenset[str]] = {}
         self._library_star_memo: dict[str, tuple[str, ...]] = {}
+        self._imported: dict[str, frozenset[str]] = {}  # see ``_imported_modules``
 
     def ensure(self, name: str) -> Module | None:
         """The module, its functions and classes numbered and its scopes gathered (done on
