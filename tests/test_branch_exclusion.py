@@ -13,6 +13,7 @@ from pathlib import Path
 
 from test_recall_globals_and_escapes import package
 from test_recall_mechanisms import entities
+from test_recall_scopes_and_reasons import reasons
 from test_workspace_discovery import write
 
 from flake8_rosgraph.analysis import build_graph
@@ -125,6 +126,13 @@ def test_a_branch_builds_names_only_from_the_constants_it_lets_through(tmp_path:
         # the same with the prefix kept on the node: an attribute it just stored
         "/relay": [("publishers", "/cmd_vel_out"), ("publishers", "?")],
     }
+
+
+def test_explain_says_the_default_does_not_reach_the_prefixed_name(tmp_path: Path) -> None:
+    root = _workspace(tmp_path)
+    status, why = reasons(root)[("fleet_bridge/fleet_bridge/teleop.py", 15)]
+    assert status == "unknown" and why[0].startswith(
+        "it is built from ROS parameter 'prefix' of its node, with no default in code that reaches this call")
 
 
 def test_no_name_the_code_never_makes_is_reported_invalid(tmp_path: Path) -> None:

@@ -255,7 +255,7 @@ def test_explain_says_which_parameter_an_unknown_name_is(tmp_path: Path):
     monitor = next(e for e in report.explanations
                    if e.site.path.endswith("monitor.py") and e.site.line == 12)
     assert monitor.status == "unknown"
-    assert any("built from ROS parameter 'scan_topic' of its node, without a default in code" in reason
+    assert any("built from ROS parameter 'scan_topic' of its node, with no default in code that reaches this call" in reason
                for reason in monitor.reasons), monitor.reasons
     driver = [e for e in report.explanations if e.site.path.endswith("driver.py") and e.site.line == 13]
     assert [e.status for e in driver] == ["complete"]  # its default names it

@@ -311,14 +311,15 @@ class _Explainer:
         return out
 
     def _parameter_reasons(self, key: tuple) -> list[str]:
-        """Unknown names that are a parameter of their node without a default in code."""
+        """Unknown names that are a parameter of their node with no default in code that reaches
+        the call (none declared, or one a branch rules out: ``if prefix:`` past a default of ``''``)."""
         found = self.graph_entities.get(key, [])
         parameters = sorted({e.name_parameters for _, e in found
                              if e.name is None and e.name_parameters})
         # Known on some paths (declared with a default inside ``try``): not on all of them.
         where = " on some paths" if any(e.partial for _, e in found) else ""
-        return [f"it is built from ROS {_plural(len(p), 'parameter')} "
-                f"{', '.join(repr(n) for n in p)} of its node, without a default in code{where}; "
+        return [f"it is built from ROS {_plural(len(p), 'parameter')} {', '.join(repr(n) for n in p)} "
+                f"of its node, with no default in code that reaches this call{where}; "
                 "where a launch file sets them, `graph --launch FILE` shows the name"
                 for p in parameters]
 
