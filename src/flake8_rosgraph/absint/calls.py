@@ -21,7 +21,8 @@ from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
 from .fieldclasses import Field
 from .fixtures import is_test_class, test_class_calls
-from .folding import PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, safe_template, wide_template
+from .folding import (PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, fold_text, safe_template,
+                      wide_template)
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
@@ -857,13 +858,13 @@ class CallSemantics:
             names = sorted(args.kw)
             pools = [recv] + list(args.pos) + [args.kw[k] for k in names]
             n = len(args.pos)
-            return fold(lambda s, *v: s.format(*v[:n], **dict(zip(names, v[n:]))), pools)
+            return fold_text(lambda s, *v: s.format(*v[:n], **dict(zip(names, v[n:]))), pools)
         if name == "join" and args.pos:
             out = BOTTOM
             for atom in args.pos[0]:
                 if not isinstance(atom, Seq):
                     return TOP
-                out = out.join(fold(lambda s, *parts: s.join(parts), [recv, *atom.items]))
+                out = out.join(fold_text(lambda s, *parts: s.join(parts), [recv, *atom.items]))
             return out if not args.pos[0].is_top else TOP
         if args.kw or args.star:
             return TOP
