@@ -253,3 +253,68 @@ def test_a_library_call_that_declares_parameters_is_complete(tmp_path: Path) -> 
     root = write(tmp_path, package("base_diag", "'diag = base_diag.diag:main'", {
         "diag": DIAGNOSTICS}))
     assert reasons(root)[("base_diag/base_diag/diag.py", 10)] == ("complete", ())
+
+
+# -- text normalised from a parameter's default is still only a default ----------------------
+NAVIGATOR = """
+    import rclpy
+    from geometry_msgs.msg import PoseWithCovarianceStamped
+    from nav_msgs.msg import Odometry
+    from rclpy.node import Node
+
+    from nav_bridge.settings import {source}
+
+
+    class NavigationBridge(Node):
+        def __init__(self):
+            super().__init__('navigation_bridge')
+            self.declare_parameter('pose_source', 'amcl')  # 'amcl' | 'odom'
+            self.pose_source = {read}
+            if self.pose_source == 'odom':
+                self.create_subscription(Odometry, 'odom', self.on_odom, 10)
+            else:
+                self.create_subscription(PoseWithCovarianceStamped, 'amcl_pose', self.on_amcl, 10)
+
+        def on_odom(self, msg):
+            self.pose = msg.pose.pose
+
+        def on_amcl(self, msg):
+            self.pose = msg.pose.pose
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(NavigationBridge())
+"""
+SETTINGS = """
+    DEFAULT_SOURCE = ' AMCL '
+
+
+    def normalised(text):
+        '''How the bridge compares a source name: trimmed, lower case.'''
+        return str(text).strip().lower()
+"""
+
+
+def _navigator(tmp_path: Path, read: str) -> Path:
+    return write(tmp_path, package("nav_bridge", "'bridge = nav_bridge.bridge:main'", {
+        "bridge": NAVIGATOR.replace("{source}", "DEFAULT_SOURCE, normalised").replace("{read}", read),
+        "settings": SETTINGS}))
+
+
+def test_a_parameter_normalised_by_string_methods_decides_no_branch(tmp_path: Path) -> None:
+    """``str(self.get_parameter('pose_source').value).strip().lower()`` in a helper of another
+    module is still the parameter's overridable default: ``== 'odom'`` names what runs by
+    default but both subscriptions exist in some configuration (an AMR's navigation bridge:
+    the odometry one was "never reached")."""
+    root = _navigator(tmp_path, "normalised(self.get_parameter('pose_source').value)")
+    assert entities(root, ("subscriptions",)) == {"/navigation_bridge": [
+        ("subscriptions", "/amcl_pose"), ("subscriptions", "/odom")]}
+
+
+def test_a_normalised_literal_still_decides_the_branch(tmp_path: Path) -> None:
+    """The twin: the same normalisation of a module literal is a plain constant, and the
+    branch it decides leaves no odometry subscription."""
+    root = _navigator(tmp_path, "normalised(DEFAULT_SOURCE)")
+    assert entities(root, ("subscriptions",)) == {"/navigation_bridge": [
+        ("subscriptions", "/amcl_pose")]}

@@ -722,7 +722,8 @@ def _module_binding(name: str, module: Module) -> str | None:
         return (f"`{name}` is also set by function {_some_code(set(setters))} (`global {name}`), "
                 "whose value there is not known statically")
     if len(top) > 1:
-        return f"`{name}` is bound {len(top)} times at module level (one per condition)"
+        how = "a loop among them" if any(isinstance(n, ast.For) for n in top) else "one per condition"
+        return f"`{name}` is bound {len(top)} times at module level ({how})"
     if len(top) == 1 and isinstance(top[0], ast.Assign) and not isinstance(top[0].value, ast.Constant):
         return (f"it depends on module-level `{name} = {_short(top[0].value)}`, whose value is "
                 "not known statically")
@@ -756,6 +757,8 @@ def _binds(node: ast.AST, name: str) -> bool:
         return any(isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt))
     if isinstance(node, (ast.AnnAssign, ast.AugAssign)):
         return isinstance(node.target, ast.Name) and node.target.id == name
+    if isinstance(node, ast.For):
+        return any(isinstance(t, ast.Name) and t.id == name for t in ast.walk(node.target))
     return False
 
 

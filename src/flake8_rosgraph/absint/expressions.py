@@ -433,6 +433,10 @@ class ExpressionSemantics:
                 else:
                     star = True
         result = self.call(func, Args(args, kwargs, star), node)
+        if holder.soft and all(isinstance(a, Const) and isinstance(a.value, str) for a in holder):
+            # ``str(param.value).strip().lower()``: text computed from an overridable default
+            # is one too (a string method's bound receiver keeps no mark of its own).
+            result = soften(result)
         target = node.func
         if isinstance(target, ast.Attribute) and target.attr == "get" and holder.is_top \
                 and len(args) == 2 and not kwargs and not star:
