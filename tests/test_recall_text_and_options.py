@@ -255,6 +255,76 @@ def test_a_library_call_that_declares_parameters_is_complete(tmp_path: Path) -> 
     assert reasons(root)[("base_diag/base_diag/diag.py", 10)] == ("complete", ())
 
 
+# -- a library that calls a callback with the arguments it was handed ------------------------
+DASHBOARD_SERVER = """
+    import threading
+
+    import rclpy
+    from flask import Flask
+    from flask_socketio import SocketIO
+
+    from robot_dashboard.bridge import relay_commands, stream_status
+
+    ROBOTS = ['red_robot', 'blue_robot']
+
+    app = Flask(__name__)
+    socketio = SocketIO(app, async_mode='threading')
+
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('dashboard')
+        for robot in ROBOTS:
+            threading.Thread(target=relay_commands, args=(node, robot), daemon=True).start()
+        socketio.start_background_task(stream_status, node, {start})
+        socketio.run(app, host='127.0.0.1')
+"""
+DASHBOARD_BRIDGE = """
+    from geometry_msgs.msg import Twist
+    from std_msgs.msg import String
+
+
+    def relay_commands(node, robot):
+        '''Forwards the browser's velocity commands to one robot.'''
+        node.create_publisher(Twist, f'/{robot}/cmd_vel', 10)
+
+
+    def stream_status(node, robots, period=0.5):
+        '''Pushes each robot's status text to the browser.'''
+        for robot in robots:
+            node.create_subscription(String, f'/{robot}/status', print, 10)
+        node.create_timer(period, lambda: None)
+"""
+
+
+def _dashboard(tmp_path: Path, start: str) -> Path:
+    return write(tmp_path, package("robot_dashboard", "'server = robot_dashboard.server:main'", {
+        "server": DASHBOARD_SERVER.replace("{start}", start), "bridge": DASHBOARD_BRIDGE}))
+
+
+def test_thread_and_background_task_targets_get_the_arguments_passed_beside_them(tmp_path: Path) -> None:
+    """``Thread(target=f, args=(node, robot))`` and Flask-SocketIO's
+    ``start_background_task(f, node, robots)`` call ``f`` with those arguments: the node the
+    server made and each robot's name, so every entity is on ``/dashboard`` with its name
+    (a referee web dashboard's ROS thread, 5 sites "not in the graph" before)."""
+    root = _dashboard(tmp_path, "ROBOTS, period=1.0")
+    assert entities(root, ("publishers", "subscriptions")) == {"/dashboard": [
+        ("publishers", "/blue_robot/cmd_vel"), ("publishers", "/red_robot/cmd_vel"),
+        ("subscriptions", "/blue_robot/status"), ("subscriptions", "/red_robot/status")]}
+    (node,) = build_graph(root).nodes
+    assert [t.period for t in node.entities if t.kind == "timers"] == [1.0]
+
+
+def test_a_target_called_with_what_the_analysis_cannot_list_invents_nothing(tmp_path: Path) -> None:
+    """The twin: arguments unpacked from a list the analysis does not know (``*robots_of()``)
+    leave the target's parameters unknown: it is still analysed, but creates on no known
+    node, and no robot name is guessed."""
+    root = _dashboard(tmp_path, "*__import__('json').loads(open('robots.json').read())")
+    got = entities(root, ("publishers", "subscriptions"))
+    assert got == {"/dashboard": [("publishers", "/blue_robot/cmd_vel"),
+                                  ("publishers", "/red_robot/cmd_vel")]}
+
+
 # -- text normalised from a parameter's default is still only a default ----------------------
 NAVIGATOR = """
     import rclpy

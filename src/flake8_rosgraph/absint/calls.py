@@ -627,8 +627,13 @@ class CallSemantics:
                     for atom in scope.get(store.on, TOP):
                         if isinstance(atom, Obj):
                             self.an.write(("a", atom.site, key), value)
+        passed = {name: (args_param, keywords_param)
+                  for name, args_param, keywords_param in model.callback_args}
         for name in model.callbacks:
-            for atom in bound.get(name, BOTTOM):
+            value = bound.get(name, BOTTOM)
+            if name in passed:
+                value = _partial(value, _passed(bound, *passed[name]))
+            for atom in value:
                 self.schedule_callback(atom)
         return result
 
@@ -1087,6 +1092,17 @@ def _partial(func: Value, given: dict[str, Value]) -> Value:
             known = isinstance(seq, Seq) and kw is not None
             bindings.append((seq.items if isinstance(seq, Seq) else (), kw or (), not known))
     return atoms(Partial(target, pos, kw, star) for target in func for pos, kw, star in bindings)
+
+
+def _passed(bound: dict, args_param: str | None, keywords_param: str | None) -> dict[str, Value]:
+    """The sequence and mapping a library calls a callback with (``Thread(target, args=(node,))``),
+    as :func:`_partial` takes them; ``None`` (``kwargs=None``, the default) passes nothing."""
+    out = {}
+    for key, param in (("args", args_param), ("keywords", keywords_param)):
+        value = bound.get(param, TOP) if param is not None else None
+        if value is not None and value.consts() != [None]:
+            out[key] = value
+    return out
 
 
 def _string_keys(mapping: DictAtom) -> tuple[tuple[str, Value], ...] | None:
