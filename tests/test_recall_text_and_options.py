@@ -388,3 +388,69 @@ def test_a_normalised_literal_still_decides_the_branch(tmp_path: Path) -> None:
     root = _navigator(tmp_path, "normalised(DEFAULT_SOURCE)")
     assert entities(root, ("subscriptions",)) == {"/navigation_bridge": [
         ("subscriptions", "/amcl_pose")]}
+
+
+# -- a node's fully qualified name builds its own topics -------------------------------------
+HEARTBEAT_BASE = """
+    from rclpy.node import Node
+    from std_msgs.msg import Header
+
+
+    class HeartbeatNode(Node):
+        '''A node that announces itself on <its fully qualified name>/heartbeat.'''
+
+        def __init__(self, name, **kwargs):
+            super().__init__(name, **kwargs)
+            self.heartbeat = self.create_publisher(
+                Header, self.get_fully_qualified_name() + '/heartbeat', 1)
+            self.create_timer(1.0, self.beat)
+
+        def beat(self):
+            self.heartbeat.publish(Header(frame_id=self.get_name()))
+"""
+HEARTBEAT_NODES = """
+    import sys
+
+    import rclpy
+    from rclpy.executors import MultiThreadedExecutor
+
+    from fleet_health.base import HeartbeatNode
+
+
+    class BatteryMonitor(HeartbeatNode):
+        def __init__(self):
+            super().__init__('battery_monitor', namespace='robot1')
+
+
+    class Docking(HeartbeatNode):
+        def __init__(self, name):
+            super().__init__(name)
+
+
+    def main():
+        rclpy.init()
+        executor = MultiThreadedExecutor()
+        executor.add_node(BatteryMonitor())
+        executor.add_node(Docking({name}))
+        executor.spin()
+"""
+
+
+def test_a_nodes_fully_qualified_name_builds_its_topic(tmp_path: Path) -> None:
+    """``get_fully_qualified_name()`` is rcl's namespace and name joined (``/robot1/…`` for a
+    namespaced node, ``/docking`` in the root namespace), in a base class of another module."""
+    root = write(tmp_path, package("fleet_health", "'health = fleet_health.nodes:main'", {
+        "base": HEARTBEAT_BASE, "nodes": HEARTBEAT_NODES.replace("{name}", "'docking'")}))
+    assert entities(root, ("publishers",)) == {
+        "/docking": [("publishers", "/docking/heartbeat")],
+        "/robot1/battery_monitor": [("publishers", "/robot1/battery_monitor/heartbeat")]}
+
+
+def test_an_unknown_node_name_gives_no_fully_qualified_name(tmp_path: Path) -> None:
+    """The twin: a node named from the command line has no known fully qualified name, and
+    its heartbeat topic stays unknown (its namespace alone names nothing)."""
+    root = write(tmp_path, package("fleet_health", "'health = fleet_health.nodes:main'", {
+        "base": HEARTBEAT_BASE, "nodes": HEARTBEAT_NODES.replace("{name}", "sys.argv[1]")}))
+    assert entities(root, ("publishers",)) == {
+        None: [("publishers", "?")],
+        "/robot1/battery_monitor": [("publishers", "/robot1/battery_monitor/heartbeat")]}

@@ -1034,6 +1034,13 @@ def _rooted(value: Value) -> list[str] | None:
     return sorted({posixpath.join("/", c or "") for c in consts})
 
 
+def _namespace_front(value: Value) -> list[str] | None:
+    """Every possible node namespace as the front of a fully qualified name, as rcl joins
+    them: ``None``, ``""`` and ``"/"`` give ``""`` (``/name``), ``"ns"`` gives ``"/ns"``."""
+    rooted = _rooted(value)
+    return sorted({r.rstrip("/") for r in rooted}) if rooted is not None else None
+
+
 def _dotted(value: Value) -> list[str] | None:
     """Every possible prefix as the front of a dotted name: ``''`` and ``None`` stay empty,
     ``'ns'`` becomes ``'ns.'``."""
@@ -1047,7 +1054,8 @@ def _dotted(value: Value) -> list[str] | None:
 _INTERFACE_NAME = re.compile(r"[A-Za-z_]\w*/(msg|srv|action)/[A-Za-z_]\w*")
 
 #: Filters usable in library-model key templates (``{param|filter}``).
-KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted}
+KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted,
+               "namespace_front": _namespace_front}
 
 
 def _store_scopes(store, bound: dict) -> Iterator[dict]:
