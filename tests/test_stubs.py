@@ -113,8 +113,9 @@ def _ref_problems(ref: Ref, params: set[str], where: str, allow_return: bool) ->
             Ref(ref.how, ref.data, ref.on), params, where, allow_return)
     if ref.how == "arg" and ref.data not in names:
         return [f"{where}: no parameter {ref.data!r}"]
-    if ref.how in ("format", "constant"):
-        return [f"{where}: no parameter {p!r}" for p in sorted(_template_params(ref.data) - params)]
+    if ref.how in ("format", "constant", "object"):
+        template = ref.data[0] if ref.how == "object" else ref.data
+        return [f"{where}: no parameter {p!r}" for p in sorted(_template_params(template) - params)]
     if ref.how == "load":
         missing = sorted((_template_params(ref.data) | {ref.on}) - names)
         return [f"{where}: no parameter {p!r}" for p in missing]
@@ -418,6 +419,8 @@ def _tf_topics(graph: RosGraph) -> list[str]:
 @pytest.mark.parametrize("text", [
     '[functions."acme.f"]\nparams = "node, depth=len(\'x\')"\n',
     '[functions."acme.f"]\nparams 3\n',
+    '[functions."acme.f"]\nparams = "x"\nreturns = { object = "{x}", separator = "/", shape = "(" }\n',
+    '[functions."acme.f"]\nparams = "x"\nreturns = { object = "{x}", separator = "", shape = ".*" }\n',
 ])
 def test_broken_user_stub_becomes_an_error_diagnostic_and_the_graph_is_still_built(tmp_path, text):
     stub = tmp_path / "broken.toml"

@@ -216,8 +216,13 @@ class InputDigests:
             write_signed(cache_dir / INPUT_INDEX, {"format": INPUT_INDEX_FORMAT, "files": self.seen}, secret)
 
 
+#: The files besides manifests and ignore markers whose content the C++ partner ends depend on.
+_CPP_KEY_SUFFIXES = CPP_SUFFIXES | {".msg", ".srv", ".action"}
+
+
 def _cpp_key(digests: InputDigests) -> str:
-    """The key of the C++ partner ends: the C++ files and the folders that make packages."""
+    """The key of the C++ partner ends: the C++ files, the folders that make packages, and the
+    interface files (a package's own ``msg/Status.msg`` names its C++ ``msg::Status``)."""
     from .cpp import memo as cpp_memo  # imported here: a warm run never needs the C++ front end
     from .workspace import IGNORE_MARKERS
 
@@ -225,7 +230,7 @@ def _cpp_key(digests: InputDigests) -> str:
                             f"{_parser_versions()}".encode())
     for rel in sorted(digests.current, key=_encoded):
         name = rel.rsplit("/", 1)[-1]
-        if os.path.splitext(name)[1] in CPP_SUFFIXES or name == "package.xml" or name in IGNORE_MARKERS:
+        if os.path.splitext(name)[1] in _CPP_KEY_SUFFIXES or name == "package.xml" or name in IGNORE_MARKERS:
             digest.update(_encoded(f"\0{rel}\0{digests.current[rel]}"))
     return digest.hexdigest()
 
@@ -686,20 +691,42 @@ def load_or_build(root: Path, settings: Settings, build: bool = True) -> Workspa
     which is slower but never wrong.
     """
     root = Path(os.path.abspath(root))
-    with inventory.shared(root):  # the key and the analysis read one listing of the workspace
-        return _load_or_build(root, settings, build)
+    keyed = _KEYED.pop((root, settings), None)
+    # the key and the analysis read one listing of the workspace
+    with inventory.shared(root, keyed.listing if keyed is not None else None) as listing:
+        return _load_or_build(root, settings, build, keyed or _Keyed(listing))
 
 
-def _load_or_build(root: Path, settings: Settings, build: bool) -> WorkspaceReport | None:
+@dataclass
+class _Keyed:
+    """A workspace's listing for one run and, once worked out, its cache key with the digests
+    it was made from. :func:`kept_state` leaves it for the same run's :func:`load_or_build`
+    (in flake8's process, or in the child flake8 forks to analyse, which inherits it): the
+    workspace is listed and keyed once per run."""
+
+    listing: inventory.Inventory
+    key: str | None = None
+    digests: InputDigests | None = None
+
+
+#: Keys :func:`kept_state` worked out for a report it did not find, until the run builds it.
+_KEYED: dict[tuple[Path, Settings], _Keyed] = {}
+
+
+def _load_or_build(root: Path, settings: Settings, build: bool, keyed: _Keyed) -> WorkspaceReport | None:
     secret = machine_secret()
     cache_dir = _cache_dir(root, settings)
     if secret is None or cache_dir is None:
         return build_report(root, settings) if build else None
-    digests = InputDigests.load(cache_dir, secret)
-    key = cache_key(root, settings, digests)
-    digests.store(cache_dir, secret)
+    if keyed.key is None or keyed.digests is None:
+        keyed.digests = InputDigests.load(cache_dir, secret)
+        keyed.key = cache_key(root, settings, keyed.digests)
+        keyed.digests.store(cache_dir, secret)
+    key, digests = keyed.key, keyed.digests
     entry = cache_dir / f"{key}.json"
     cached = _read_entry(entry, root, key, secret)
+    if cached is None and not build:
+        _KEYED[(root, settings)] = keyed  # the run builds it next: keyed already
     if cached is not None or not build:
         return cached  # the common case: nothing else to key, import or read
     with contextlib.ExitStack() as stack:
@@ -798,4 +825,5 @@ def workspace_report(root: Path, settings: Settings, buffers: Buffers = ()) -> W
 def start_run() -> None:
     """Forget memoised reports and resolved folders: a new flake8 run must see the files as they are now."""
     _MEMO.clear()
+    _KEYED.clear()
     forget_folders()

@@ -111,15 +111,16 @@ _CURRENT: ContextVar[Inventory | None] = ContextVar("flake8_rosgraph_inventory",
 
 
 @contextlib.contextmanager
-def shared(root: str | os.PathLike[str]) -> Iterator[Inventory]:
-    """Share one inventory of ``root`` among the walks inside the ``with`` block (the one already
-    shared when it covers ``root``)."""
+def shared(root: str | os.PathLike[str], taken: Inventory | None = None) -> Iterator[Inventory]:
+    """Share one inventory of ``root`` among the walks inside the ``with`` block: the one already
+    shared when it covers ``root``, else ``taken`` (a listing this run took earlier of the same
+    root), else a new one."""
     current = _CURRENT.get()
     top = os.path.abspath(root)
     if current is not None and current.covers(top):
         yield current
         return
-    inventory = Inventory(top)
+    inventory = taken if taken is not None and taken.root == top else Inventory(top)
     token = _CURRENT.set(inventory)
     try:
         yield inventory

@@ -418,6 +418,54 @@ def test_interface_type_spellings():
     assert interface_type("Chain", aliases) == "std_msgs/msg/String"
     assert interface_type("MsgT", aliases) is None
     assert interface_type("std_msgs::msg::String::SharedPtr", ()) is None
+    own = frozenset({"fleet::msg::Status"})
+    assert interface_type("msg::Status", (), "fleet::detail", own) == "fleet/msg/Status"
+    assert interface_type("msg::Status", (), "tools", own) is None
+    assert interface_type("msg::Other", (), "fleet", own) is None
+    assert interface_type("::msg::Status", (), "fleet", own) is None
+
+
+def test_a_relative_type_in_the_packages_namespace_is_its_own_interface(tmp_path):
+    """``msg::VehicleState`` inside ``namespace fleet`` of package ``fleet`` is the package's own
+    ``fleet/msg/VehicleState`` (also in a member defined outside the namespace); a loop over
+    topic names keeps the end as an unknown name of that type. Twins: the same spelling in
+    another namespace (a ``using namespace`` may make ``msg`` any package's) and at file scope
+    stay unknown."""
+    write_package(tmp_path, "fleet", {"msg/VehicleState.msg": "string id\nfloat64 x\n", "src/referee.cpp": """
+        #include "rclcpp/rclcpp.hpp"
+        #include "fleet/msg/vehicle_state.hpp"
+        namespace fleet {
+        namespace detail {
+        constexpr char kStatus[] = "/fleet/status";
+        }
+        class Referee : public rclcpp::Node {
+        public:
+          explicit Referee(const std::vector<std::string> & topics) : Node("referee") {
+            for (const auto & topic : topics) {
+              subs_.push_back(create_subscription<msg::VehicleState>(topic, 10, [](msg::VehicleState::SharedPtr) {}));
+            }
+            status_ = create_publisher<msg::VehicleState>(detail::kStatus, 10);
+          }
+          void start();
+        private:
+          std::vector<rclcpp::Subscription<msg::VehicleState>::SharedPtr> subs_;
+          rclcpp::Publisher<msg::VehicleState>::SharedPtr status_;
+        };
+        }  // namespace fleet
+        void fleet::Referee::start() {
+          create_publisher<msg::VehicleState>("/fleet/started", 10);
+        }
+        namespace tools {
+        class Probe : public rclcpp::Node {
+        public:
+          Probe() : Node("probe") { create_publisher<msg::VehicleState>("/probe", 10); }
+        };
+        }
+    """})
+    state = "fleet/msg/VehicleState"
+    assert endpoints(tmp_path) == {
+        ("/referee", "subscriptions", None, state), ("/referee", "publishers", "/fleet/status", state),
+        ("/referee", "publishers", "/fleet/started", state), ("/probe", "publishers", "/probe", None)}
 
 
 def test_an_end_with_unknown_name_and_type_is_left_out_with_a_diagnostic(tmp_path):

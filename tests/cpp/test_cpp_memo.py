@@ -50,3 +50,11 @@ def test_a_python_edit_reuses_the_ends_and_a_cpp_edit_reads_them_again(tmp_path:
     again = cache.load_or_build(root, settings)
     assert len(reads) == 2
     assert again == cache.build_report(root, settings)  # as a run without any cache
+    # A package's own interface decides what its C++ ``msg::Name`` is: a new one reads them again.
+    package = next(iter(sorted(root.rglob("package.xml")))).parent
+    (package / "msg").mkdir(exist_ok=True)
+    (package / "msg" / "Heartbeat.msg").write_text("uint32 sequence\n")
+    before = len(reads)
+    cache.start_run()
+    cache.load_or_build(root, settings)
+    assert len(reads) == before + 1

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from flake8_rosgraph import cache
+from flake8_rosgraph import cache, inventory
 from flake8_rosgraph.options import Settings
 
 from .conftest import RAW_STANDARD, analyses
@@ -167,6 +167,34 @@ def test_unchanged_files_are_not_read_again_for_the_key(fake_engine: Path, works
     rebuilt = cache.load_or_build(workspace, SETTINGS)
     assert hashed == [listener] and len(analyses(fake_engine)) == 2
     assert ("src/pkg_b/pkg_b/listener.py", 6, 10, "ROS003") in _found(rebuilt)
+
+
+def test_one_run_lists_and_keys_the_workspace_once_from_the_lookup_to_the_report(
+        fake_engine: Path, workspace: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """flake8 asks whether the report is kept before it forks the child that builds it: the
+    child (here: the same process) builds it from that listing and key; the next run lists and
+    keys the workspace again, and sees an edit made in between."""
+    keyed: list[Path] = []
+    listed: list[str] = []
+    real_key, real_list = cache.cache_key, inventory._list
+    monkeypatch.setattr(cache, "cache_key", lambda root, *a: keyed.append(root) or real_key(root, *a))
+    monkeypatch.setattr(inventory, "_list", lambda folder: listed.append(folder) or real_list(folder))
+    cache.start_run()
+    assert cache.kept_state(workspace, SETTINGS) == "missing"
+    folders = sorted(listed)
+    first = cache.load_or_build(workspace, SETTINGS)
+    assert len(keyed) == 1 and sorted(listed) == folders and len(analyses(fake_engine)) == 1
+    assert not any("/nobody_else" in f.message for f in first.findings)
+
+    listener = workspace / "src/pkg_b/pkg_b/listener.py"
+    listener.write_text(listener.read_text().replace("'nobody'", "'nobody_else'"))
+    cache.start_run()
+    assert cache.kept_state(workspace, SETTINGS) == "missing"
+    rebuilt = cache.load_or_build(workspace, SETTINGS)
+    assert len(keyed) == 2 and sorted(listed) == sorted(folders * 2) and len(analyses(fake_engine)) == 2
+    assert any("topic '/nobody_else' has no publisher" in f.message for f in rebuilt.findings)
+    cache.start_run()
+    assert cache.kept_state(workspace, SETTINGS) == "kept" and len(keyed) == 3
 
 
 @pytest.mark.parametrize("damage", ["{not json", "[]", '{"format": 1, "files": {}}'])

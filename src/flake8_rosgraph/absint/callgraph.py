@@ -41,6 +41,9 @@ class CallSite:
     #: for a bare ``except:``, ``?`` for a class the analysis cannot name) — what stops an
     #: exception the call raises (a guarded ``get_parameter``).
     caught: tuple[str, ...] = ()
+    #: Conditional only on the module's top-level ``__main__`` guard, in a statement its run
+    #: as a program always runs, in order (:func:`.main_guard.script_steps`).
+    script_step: bool = False
 
     def arg(self, name: str) -> Value | None:
         for key, value in self.args:

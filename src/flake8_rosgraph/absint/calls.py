@@ -223,10 +223,13 @@ class CallSemantics:
         frame = self.frame
         if node is None or not hasattr(node, "lineno"):
             return
+        conditional = self.conditional_here()
         frame.calls[(id(node), callee)] = CallSite(
             frame.module.path, node.lineno, frame.module.column(node), callee,
-            self.conditional_here(), frame.guarded, args, effects, node,
-            self._caught() if effects and frame.catching else ())
+            conditional, frame.guarded, args, effects, node,
+            self._caught() if effects and frame.catching else (),
+            conditional and frame.func is None and frame.cls is None
+            and any(first <= node.lineno <= last for first, last in frame.module.script_steps))
 
     def _caught(self) -> tuple[str, ...]:
         """What the ``except`` clauses around the current operation catch (see
@@ -675,8 +678,8 @@ class CallSemantics:
             return _soft_like(ref.data, bound, atoms(Const.of(k) for k in keys)) if keys else TOP
         if ref.how == "constant":
             return self.named_constant(ref.data, bound)
-        if ref.how == "interface":
-            return self.named_interface(ref.data, bound)
+        if ref.how == "object":
+            return self.named_object(*ref.data, bound)
         if ref.how == "field":
             if isinstance(receiver, Record):
                 return receiver.field(ref.data) or TOP
@@ -709,15 +712,16 @@ class CallSemantics:
             out = out.join(found)
         return TOP if out.is_bottom else _soft_like(template, bound, out)
 
-    def named_interface(self, template: str, bound: dict) -> Value:
-        """The interface classes every expansion of ``template`` names as ``pkg/msg/Name``
-        (``srv``, ``action``): what ``from pkg.msg import Name`` binds. Unknown when one
-        expansion is not such a name (``'pkg/Name'``, which the library completes by the
-        kind it is asked for, included)."""
+    def named_object(self, template: str, separator: str, shape: str, bound: dict) -> Value:
+        """The library objects every expansion of ``template`` names, its dotted path written
+        with ``separator`` between the parts (``'pkg/msg/Name'``: what ``from pkg.msg import
+        Name`` binds). Unknown when one expansion does not have the ``shape`` (a regular
+        expression matching the whole text) the library accepts: such a name means something
+        else to it (a short name it completes), or nothing."""
         keys = self.format_keys(template, bound)
-        if not keys or not all(_INTERFACE_NAME.fullmatch(k) for k in keys):
+        if not keys or not all(re.fullmatch(shape, k) for k in keys):
             return TOP
-        return _soft_like(template, bound, join_all(self.extern(k.replace("/", ".")) for k in keys))
+        return _soft_like(template, bound, join_all(self.extern(k.replace(separator, ".")) for k in keys))
 
     def format_keys(self, template: str, bound: dict) -> list[str]:
         """All expansions of a key template over constant arguments.
@@ -1049,9 +1053,6 @@ def _dotted(value: Value) -> list[str] | None:
         return None
     return sorted({f"{c}." if c else "" for c in consts})
 
-
-#: An interface's full name: ``package/msg/Name`` (``srv``, ``action``).
-_INTERFACE_NAME = re.compile(r"[A-Za-z_]\w*/(msg|srv|action)/[A-Za-z_]\w*")
 
 #: Filters usable in library-model key templates (``{param|filter}``).
 KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted,

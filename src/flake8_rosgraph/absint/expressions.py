@@ -240,20 +240,21 @@ class ExpressionSemantics:
             return None
         named = arguments[1:] if setter else arguments  # a setter is split by its name alone
         read = {n.id for arg in named for n in ast.walk(arg) if isinstance(n, ast.Name)}
-        best: tuple[int, LoopRows] | None = None
+        best: tuple[int, LoopRows, list[int]] | None = None
         for loop, table in frame.loop_rows.items():
             used = read.intersection(table.names)
-            if used and all(self._holder(n).get(n) is v for n, v in zip(table.names, table.bound)) \
-                    and (best is None or len(used) > len(read.intersection(best[1].names))):
-                best = (loop, table)
+            reaching = self._reaching_rows(table) if used else None
+            if reaching is not None and (best is None or len(used) > len(read.intersection(best[1].names))):
+                best = (loop, table, reaching)
         if best is None or not (setter or self._creates(self.eval(node.func))):
             return None
-        loop, table = best
+        loop, table, reaching = best
         holders = [self._holder(name) for name in table.names]
         saved = [holder[name] for holder, name in zip(holders, table.names)]
         out = BOTTOM
         try:
-            for index, row in enumerate(table.rows):
+            for index in reaching:
+                row = table.rows[index]
                 for holder, name, value in zip(holders, table.names, row):
                     holder[name] = value
                 frame.row = (loop, index)
@@ -263,6 +264,22 @@ class ExpressionSemantics:
                 holder[name] = value
             frame.row = None
         return out
+
+    def _reaching_rows(self, table: LoopRows) -> list[int] | None:
+        """The rows of ``table`` that reach the current operation, while its variables still
+        hold what the loop bound them to, or what a branch narrowed that to (``if not
+        enabled: continue`` lets only the enabled rows through); ``None`` when a variable
+        holds something else (the rows no longer say what it is)."""
+        narrowings: list[tuple[int, Value]] = []
+        for column, (name, bound) in enumerate(zip(table.names, table.bound)):
+            current = self._holder(name).get(name)
+            if current == bound:
+                continue
+            if current is None or self.frame.narrowed.get((name, current)) != bound:
+                return None
+            narrowings.append((column, current))
+        return [index for index, row in enumerate(table.rows)
+                if all(row[column].leq(current) for column, current in narrowings)]
 
     def _is_setattr(self, node: ast.Call) -> bool:
         """``setattr(obj, name, value)`` with the builtin: a store by name, which a loop over

@@ -35,3 +35,6 @@ class Frame:
     loop_rows: dict[int, LoopRows] = field(default_factory=dict)
     #: The row a creation call is being evaluated for: ``(loop, row index)``, else ``None``.
     row: tuple[int, int] | None = None
+    #: What branches narrowed locals to (:mod:`.exclusion`): (name, narrowed value) -> the
+    #: value it narrowed, so a loop over a table still knows which of its rows reach a branch.
+    narrowed: dict[tuple[str, Value], Value] = field(default_factory=dict)

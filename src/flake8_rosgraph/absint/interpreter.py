@@ -24,6 +24,7 @@ from .values import (BOTTOM, MAX_ATOMS, TOP, ClassAtom, Coll, Const, DictAtom, E
 from .attrflow import AttributeFlow, join_remembered
 from .calls import CallSemantics
 from .containers import may_be_filled_elsewhere, with_item
+from .exclusion import narrowed, ruled_out
 from .expressions import ExpressionSemantics
 from .fieldclasses import Field
 from .fixtures import Fixtures
@@ -199,13 +200,17 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     heapq.heappush(work, target)
 
     def _narrowed(self, env: Env, edge, block, cfg: CFG) -> Env:
-        """``env`` past a guard that holds a local to known texts or numbers: after ``if x
-        not in ALLOWED: raise`` (or ``return``) ``x`` is one of the constants ``ALLOWED``
-        lists, after ``if x != 'a': return`` it is ``'a'``. Only where the other way out of
-        the test leaves the function: a branch that joins the rest again would mix the
-        narrowed value with the original there and give it names it does not decide. Not a
-        setting from outside either (its origin names it for a launch file)."""
+        """``env`` on one way out of a test: without the constants the test rules out there
+        (:meth:`_without_ruled_out`, every test); and past a guard that holds a local to known
+        texts or numbers, only those: after ``if x not in ALLOWED: raise`` (or ``return``) ``x``
+        is one of the constants ``ALLOWED`` lists, after ``if x != 'a': return`` it is ``'a'``.
+        The latter only where the other way out of the test leaves the function: a branch
+        that joins the rest again would mix the narrowed value with the original there and
+        give it names it does not decide. Not a setting from outside either (its origin
+        names it for a launch file)."""
         test = edge.test
+        if self._pure_test(test):
+            env = self._without_ruled_out(env, test, edge.polarity)
         if not (isinstance(test, ast.Compare) and len(test.ops) == 1
                 and isinstance(test.left, ast.Name) and test.left.id in env
                 and self._pure_test(test)):
@@ -233,6 +238,22 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         narrowed = dict(env)
         narrowed[test.left.id] = atoms((Const.of(c) for c in kept), current.soft)
         return narrowed
+
+    def _without_ruled_out(self, env: Env, test: ast.expr, holds: bool) -> Env:
+        """``env`` without the constants a local cannot be when ``test`` evaluates to ``holds``
+        (:mod:`.exclusion`): the ``else`` of ``if x == ''``, the body of ``if ns:``."""
+        out = env
+        for name, keep in ruled_out(test, holds, self.eval, _listed_constants):
+            current = out.get(name)
+            if current is None:
+                continue
+            value = narrowed(current, keep)
+            if value is not current:
+                out = dict(out) if out is env else out
+                out[name] = value
+                # for the rows of a table loop: what the loop bound, however often narrowed
+                self.frame.narrowed[(name, value)] = self.frame.narrowed.get((name, current), current)
+        return out
 
     def _pure_test(self, test: ast.expr) -> bool:
         """Whether evaluating ``test`` changes nothing its evaluation reads: no call (a library

@@ -13,6 +13,7 @@ A broken entry is skipped with a message naming the file and key; the rest loads
 from __future__ import annotations
 
 import ast
+import re
 from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Iterable
 
@@ -94,8 +95,8 @@ class Ref:
     (a literal), "format" (a ``str.format`` template over parameters), "load" (a value
     stored earlier on the object in parameter ``on`` under ``key``), "field" (a
     field of the receiver record), "constant" (the library constant a template names) or
-    "interface" (the message, service or action class a template names as
-    ``pkg/msg/Name``).
+    "object" (the library object a template names in another spelling of its dotted path:
+    ``data`` is ``(template, separator, shape)``, see :meth:`.calls.CallSemantics.named_object`).
 
     ``input`` (``(on, key template)``, from ``input = {on = …, key = …}``) says that the
     value *is* a setting supplied from outside the program — the one the object in
@@ -141,11 +142,16 @@ def _ref(raw: Any, where: str) -> Ref:
             return Ref("field", raw["field"])
         if keys == {"constant"} and isinstance(raw["constant"], str):
             return Ref("constant", raw["constant"])
-        if keys == {"interface"} and isinstance(raw["interface"], str):
-            return Ref("interface", raw["interface"])
+        if keys == {"object", "separator", "shape"} and all(isinstance(v, str) for v in raw.values()) \
+                and raw["separator"]:
+            try:
+                re.compile(raw["shape"])
+            except re.error as exc:
+                raise StubError(f"{where}: shape is not a regular expression: {exc}") from exc
+            return Ref("object", (raw["object"], raw["separator"], raw["shape"]))
     raise StubError(f"{where}: expected a parameter name or one of {{arg=…}}, "
                     f"{{overridable=…}}, {{const=…}}, {{format=…}}, {{load=…, on=…}}, "
-                    f"{{field=…}}, {{constant=…}}, {{interface=…}}; got {raw!r}")
+                    f"{{field=…}}, {{constant=…}}, {{object=…, separator=…, shape=…}}; got {raw!r}")
 
 
 @dataclass(frozen=True)

@@ -9,10 +9,12 @@ ones included.  The engine only ever looks things up here.
 from __future__ import annotations
 
 import ast
+import functools
 from dataclasses import dataclass, field
 from typing import Callable
 
 from .cfg import CFG, build_cfg
+from .main_guard import script_steps
 from .outline import ImportStatement
 
 
@@ -64,6 +66,12 @@ class Module:
         if text is not None:
             col = len(text.encode("utf-8")[:col].decode("utf-8", "replace"))
         return col + 1
+
+    @functools.cached_property
+    def script_steps(self) -> tuple[tuple[int, int], ...]:
+        """Lines of the statements its run as a program always runs in order
+        (:func:`.main_guard.script_steps`)."""
+        return script_steps(self.tree)
 
 
 @dataclass

@@ -337,7 +337,7 @@ class _Reader:
             names += (None,)
         self.facts.endpoints.append(EndpointFact(
             kind, names, message_type, qos,
-            self.src.location(call), self.owner(receiver, site.func, site.cls), written))
+            self.src.location(call), self.owner(receiver, site.func, site.cls), written, _scope(call)))
 
     # -- helpers ---------------------------------------------------------------------------------
     def _choices(self, node: Any, func: Any) -> tuple[str | None, ...]:
@@ -424,6 +424,27 @@ def _function_name(func: Any) -> str:
     declarator = _function_declarator(func)
     name = declarator.child_by_field_name("declarator") if declarator is not None else None
     return text(name) if name is not None else ""
+
+
+def _scope(node: Any) -> str:
+    """The scope C++ looks names up in at ``node`` (:attr:`.facts.EndpointFact.scope`): the named
+    namespaces around it, then the qualifier of the function it is in when that function is
+    defined outside its class or namespace (``void fleet::Bridge::start()``)."""
+    parts: list[str] = []
+    qualifier = ""
+    parent = node.parent
+    while parent is not None:
+        if parent.type == "namespace_definition":
+            name = parent.child_by_field_name("name")
+            if name is not None:
+                parts.append(text(name).replace(" ", ""))
+        elif parent.type == "function_definition" and not qualifier and not parts:
+            declarator = _function_declarator(parent)
+            name = declarator.child_by_field_name("declarator") if declarator is not None else None
+            if name is not None and name.type == "qualified_identifier":
+                qualifier = text(name).replace(" ", "").rsplit("::", 1)[0]
+        parent = parent.parent
+    return "::".join([*reversed(parts), *([qualifier] if qualifier else [])])
 
 
 def _method_class(func: Any) -> str | None:

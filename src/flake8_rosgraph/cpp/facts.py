@@ -64,6 +64,10 @@ class EndpointFact:
     location: Location
     owner: Owner
     written: str
+    #: Where the call is: the namespaces around it and the scope its function is defined in
+    #: (``fleet::Bridge`` for ``void fleet::Bridge::start()``), joined by ``::``; C++ looks a
+    #: relative type (``msg::Status``) up there, innermost first.
+    scope: str = ""
 
 
 @dataclass(frozen=True)

@@ -21,6 +21,8 @@ whole workspace. With a known type it stays, as an unknown for that type only.
 """
 from __future__ import annotations
 
+import contextlib
+import os
 import re
 from collections import defaultdict
 from pathlib import Path, PurePosixPath
@@ -62,7 +64,7 @@ def cpp_graph(root: Path) -> tuple[list[RosNode], list[Diagnostic]]:
     parsed_headers = {PurePosixPath(f.path).name for f in files}
     second = [s for s in sources if not mentions_rclcpp(s) and _through_headers(s, parsed_headers, node_headers)]
     files += _read_all(second, parser, diagnostics)
-    joiner = Joiner(files)
+    joiner = Joiner(files, root)
     nodes = joiner.nodes()
     diagnostics += [d for f in files for d in f.diagnostics] + joiner.diagnostics
     return nodes, diagnostics
@@ -93,25 +95,50 @@ def _read_all(sources: list[CppSource], parser: Any, diagnostics: list[Diagnosti
     return files
 
 
-def interface_type(written: str | None, aliases: Iterable[dict[str, str]]) -> str | None:
-    """``std_msgs::msg::String`` (or an alias of it) → ``std_msgs/msg/String``; ``None`` otherwise."""
+def interface_type(written: str | None, aliases: Iterable[dict[str, str]], scope: str = "",
+                   own: frozenset[str] = frozenset()) -> str | None:
+    """``std_msgs::msg::String`` (or an alias of it) → ``std_msgs/msg/String``; ``None`` otherwise.
+
+    A relative name is looked up in the namespaces of ``scope``, innermost first, as C++ does,
+    among the ``own`` interfaces of the file's package (``fleet::msg::Status`` for its
+    ``msg/Status.msg``): ``msg::Status`` in namespace ``fleet`` (or ``fleet::detail``) is that
+    one. Never another package's: there a ``using namespace`` may decide what ``msg`` is, and a
+    wrong type is worse than an unknown one."""
     tables = list(aliases)
+    enclosing = scope.split("::") if scope and own else []
     for _ in range(MAX_ALIAS_STEPS):
         if written is None:
             return None
         written = written.replace(" ", "").removeprefix("typename").removeprefix("const")
-        match = _INTERFACE.match(written)
+        found = next((f"{prefix}::{written}" for prefix in ("::".join(enclosing[:n])
+                      for n in range(len(enclosing), 0, -1)) if f"{prefix}::{written}" in own), written)
+        match = _INTERFACE.match(found)
         if match:
             return f"{match.group(1)}/{match.group(2)}/{match.group(3)}"
         written = next((table[written] for table in tables if written in table), None)
     return None
 
 
+def own_interfaces(root: Path, package: str) -> frozenset[str]:
+    """The interfaces the package in folder ``package`` defines, as C++ names them
+    (``fleet::msg::Status`` for ``msg/Status.msg``; the folder's name is the package's)."""
+    name = PurePosixPath(package).name
+    out = set()
+    for kind in ("msg", "srv", "action"):
+        with contextlib.suppress(OSError):
+            with os.scandir(root / package / kind) as entries:
+                out.update(f"{name}::{kind}::{entry.name[:-len(kind) - 1]}" for entry in entries
+                           if entry.name.endswith(f".{kind}") and entry.is_file())
+    return frozenset(out)
+
+
 class Joiner:
     """Joins the facts of all files: classes across files, nodes per owner, entities per node."""
 
-    def __init__(self, files: list[FileFacts]) -> None:
+    def __init__(self, files: list[FileFacts], root: Path | None = None) -> None:
         self.files = files
+        self.root = root
+        self._own: dict[str, frozenset[str]] = {}
         self.diagnostics: list[Diagnostic] = []
         self.classes: dict[ClassKey, Location] = {}
         self.bases: dict[ClassKey, tuple[str, ...]] = {}
@@ -136,6 +163,12 @@ class Joiner:
         self._decl_nodes: dict[str, list[RosNode]] = {}
         self._class_nodes: dict[ClassKey, list[RosNode]] = defaultdict(list)
         self._node_class_of: dict[int, ClassKey] = {}
+
+    def own_interfaces(self, package: str) -> frozenset[str]:
+        """:func:`own_interfaces` of a package folder, read once (none without the root)."""
+        if package not in self._own:
+            self._own[package] = own_interfaces(self.root, package) if self.root is not None else frozenset()
+        return self._own[package]
 
     def lookup(self, name: str, package: str, path: str) -> ClassKey | None:
         """The class ``name`` means in file ``path``: the file's own, its package's headers', else the one
@@ -194,7 +227,8 @@ class Joiner:
         for facts in self.files:
             aliases = (facts.aliases, self.package_aliases.get(facts.package, {}))
             for endpoint in facts.endpoints:
-                type_ = interface_type(endpoint.type_written, aliases)
+                type_ = interface_type(endpoint.type_written, aliases, endpoint.scope,
+                                       self.own_interfaces(facts.package) if endpoint.scope else frozenset())
                 kept = False
                 for node in self.owner_nodes(endpoint.owner, endpoint.location):
                     for raw in endpoint.names:

@@ -6,7 +6,6 @@ From the analysis' effects (kinds declared by the stubs: ``callback``, ``spin``,
 """
 from __future__ import annotations
 
-import ast
 import math
 from collections import deque
 
@@ -14,7 +13,6 @@ from ..absint.callgraph import CallGraph, CallSite
 from ..absint.engine import Analysis, Effect
 from ..absint.program import Function
 from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value, wrapped
-from .main_guard import is_main_guard
 from .model import Location
 from .usage import (BlockingCall, Callback, Group, NodeParameters, OutOfOrder, ParameterUse, PeriodArgument,
                     Redeclaration, Signature, Step, UsageFacts, callback_order)
@@ -28,8 +26,6 @@ MAX_REACHED_TASKS = 2000
 SINGLE_THREADED = frozenset({"rclpy.executors.SingleThreadedExecutor"})
 MULTI_THREADED = frozenset({"rclpy.executors.MultiThreadedExecutor"})
 REENTRANT_GROUP = "rclpy.callback_groups.ReentrantCallbackGroup"
-#: Statements that run as a whole, one after the other, when they stand in a straight body.
-SIMPLE_STATEMENTS = (ast.Expr, ast.Assign, ast.AnnAssign, ast.AugAssign)
 #: What reading or setting an undeclared parameter raises.
 UNDECLARED = "rclpy.exceptions.ParameterNotDeclaredException"
 EXCLUSIVE_GROUP = "rclpy.callback_groups.MutuallyExclusiveCallbackGroup"
@@ -37,10 +33,6 @@ EXCLUSIVE_GROUP = "rclpy.callback_groups.MutuallyExclusiveCallbackGroup"
 
 def _loc(item: Effect | CallSite) -> Location:
     return Location(item.path, item.line, item.column)
-
-
-def _within(site: CallSite, spans: tuple[tuple[str, int, int], ...]) -> bool:
-    return any(path == site.path and first <= site.line <= last for path, first, last in spans)
 
 
 def _obj_sites(value: Value | None) -> frozenset[str] | None:
@@ -481,8 +473,7 @@ class UsageBuilder:
             kinds = [{e.kind for e in s.effects} for s in sites]
             if not sites or any(_custom_context(e) for s in sites for e in s.effects):
                 continue
-            script = self._script_steps(task)
-            fixed = [not s.guarded and (not s.conditional or _within(s, script)) for s in sites]
+            fixed = [not s.guarded and (not s.conditional or s.script_step) for s in sites]
             inits = [i for i, k in enumerate(kinds) if "context_init" in k and fixed[i]]
             shutdowns = [i for i, k in enumerate(kinds) if "context_shutdown" in k and fixed[i]]
             any_init = [i for i, k in enumerate(kinds) if "context_init" in k]
@@ -499,19 +490,6 @@ class UsageBuilder:
                         _loc(sites[earlier[0]])))
             self._after_destroy(sites, fixed, out, entity_memo)
         return [out[k] for k in sorted(out)]
-
-    def _script_steps(self, task: tuple) -> tuple[tuple[str, int, int], ...]:
-        """For a module's own run: ``(path, first, last)`` lines of each simple statement
-        directly in its top-level ``if __name__ == '__main__':``. A script runs them one after
-        the other whenever it runs, so they order each other as a body's straight code does
-        (``behavior = AutonomyBehavior()`` before ``rclpy.init()``)."""
-        module = self.program.modules.get(task[1]) if task[0] == "mod" else None
-        if module is None:
-            return ()
-        return tuple((module.path, stmt.lineno, stmt.end_lineno or stmt.lineno)
-                     for guard in module.tree.body if isinstance(guard, ast.If) and is_main_guard(guard.test)
-                     for stmt in guard.body if isinstance(stmt, SIMPLE_STATEMENTS)
-                     and not any(isinstance(n, (ast.IfExp, ast.BoolOp)) for n in ast.walk(stmt)))
 
     def _after_destroy(self, sites, fixed, out, memo) -> None:
         destroyed: dict[str, int] = {}

@@ -29,7 +29,7 @@ from typing import Mapping, Sequence
 from ..absint.engine import Analysis, Effect
 from ..absint.values import ClassAtom, Obj
 from ..graph.builder import _class_name
-from ..graph.main_guard import is_main_guard
+from ..absint.main_guard import is_main_guard
 from ..graph.model import Location
 from .model import ExecutableRef
 from .packages import Executable, PackageIndex
