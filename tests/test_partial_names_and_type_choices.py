@@ -79,13 +79,13 @@ LIDAR = {
 
 def test_a_launch_parameter_or_a_default_keeps_the_default_as_a_partly_known_name(tmp_path: Path) -> None:
     """The helper returns the parameter (unknown) or the default: the default names an entity
-    marked partial, beside the unknown rest. The hint is no constant: ``topic + '/filtered'``
-    stays unknown, and ``topic != DEFAULT_SCAN_TOPIC`` is not decided (the notice publisher
-    exists, on some paths)."""
+    marked partial, beside the unknown rest. Text built from it keeps it the same way
+    (``topic + '/filtered'`` is ``/scan/filtered`` on some paths), but the hint is no constant:
+    ``topic != DEFAULT_SCAN_TOPIC`` is not decided (the notice publisher exists, on some paths)."""
     root = write(tmp_path, LIDAR)
     assert endpoints(root) == {"/lidar_driver": [
         (14, "/scan", "LaserScan", "partial"), (14, "?", "LaserScan", ""),
-        (15, "?", "LaserScan", ""),
+        (15, "/scan/filtered", "LaserScan", "partial"), (15, "?", "LaserScan", ""),
         (17, "/remapped_notice", "String", ""),
         (19, "/lidar/status", "String", "partial"), (19, "?", "String", ""),
     ]}
@@ -95,7 +95,7 @@ def test_a_launch_parameter_or_a_default_keeps_the_default_as_a_partly_known_nam
     lines = {e.site.line: e.line() for e in explain(analysis, graph).gaps()}
     assert "unknown name (known only partly: '/scan' on some paths, unknown on others)" in lines[14]
     assert "topic_or_default(self, 'scan_topic', DEFAULT_SCAN_TOPIC)" in lines[14]
-    assert "known only partly" not in lines[15]
+    assert "unknown name (known only partly: '/scan/filtered' on some paths" in lines[15]
 
 
 def test_a_name_unknown_on_every_path_stays_unknown(tmp_path: Path) -> None:

@@ -322,6 +322,18 @@ BROKEN: dict[str, tuple[str, str]] = {
                        "functions.'acme.wait'.blocking: expected a non-empty string"),
     "blocks_for without blocking": ('[functions."acme.wait"]\nparams = "secs"\nblocks_for = "secs"\n',
                                     "functions.'acme.wait'.blocks_for: only meaningful with blocking"),
+    "callback_args for no callback": ('[functions."acme.run"]\nparams = "target, args=()"\n'
+                                      'callback_args = { target = { args = "args" } }\n',
+                                      "functions.'acme.run'.callback_args.target: not one of callbacks"),
+    "callback_args naming no parameter": ('[functions."acme.run"]\nparams = "target, args=()"\n'
+                                          'callbacks = ["target"]\n'
+                                          'callback_args = { target = { args = "argv" } }\n',
+                                          "functions.'acme.run'.callback_args.target.args: 'argv' "
+                                          "is not a parameter"),
+    "callback_args with an unknown key": ('[functions."acme.run"]\nparams = "target, args=()"\n'
+                                          'callbacks = ["target"]\n'
+                                          'callback_args = { target = { positional = "args" } }\n',
+                                          "functions.'acme.run'.callback_args.target: expected args"),
     "blocks_for not a parameter": ('[functions."acme.wait"]\nparams = "secs"\nblocking = "sleeps"\n'
                                    'blocks_for = "seconds"\n',
                                    "functions.'acme.wait'.blocks_for: 'seconds' is not a parameter"),

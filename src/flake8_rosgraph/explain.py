@@ -28,7 +28,7 @@ from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS, unpaired_types
-from .graph.model import Entity, RosGraph
+from .graph.model import NAMED_KINDS, Entity, RosGraph
 from .graph.parameter_switches import switched_off
 
 #: Effect kinds that put something in the graph a user looks for (parameters are listed
@@ -304,7 +304,7 @@ class _Explainer:
                 return None
             if any(e.kind != "timers" and e.name is None for _, e in found):
                 out.append("unknown name" + _partly_known(e for _, e in found))
-            if any(e.kind != "timers" and e.type is None for _, e in found):
+            if any(e.kind in NAMED_KINDS and e.type is None for _, e in found):  # typed kinds only
                 out.append("unknown type")
             if any(n.unresolved_base for n, _ in found):
                 out.append("unknown node")
@@ -713,17 +713,54 @@ def _argument(call: ast.Call, signature, param: str) -> ast.expr | None:
 
 
 def _module_binding(name: str, module: Module) -> str | None:
-    """A module-level name bound more than once (imports chosen by a condition)."""
-    count = 0
-    for node in ast.walk(module.tree):
-        if isinstance(node, (ast.Import, ast.ImportFrom)):
-            count += sum((a.asname or a.name.split(".")[0]) == name for a in node.names)
-        elif isinstance(node, ast.Assign) and any(
-                isinstance(t, ast.Name) and t.id == name for t in node.targets):
-            count += 1
-    if count > 1:
-        return f"`{name}` is bound {count} times at module level (one per condition)"
+    """How a module-level name is bound, in words: more than once at module level (imports
+    chosen by a condition), also by a function that declares it ``global``, or once to a
+    value that is not a literal (``ns = sys.argv[1] if len(sys.argv) > 1 else 'robot'``)."""
+    top: list[ast.AST] = []
+    setters: list[str] = []
+    _module_bindings(name, module.tree.body, top, setters)
+    if setters:
+        return (f"`{name}` is also set by function {_some_code(set(setters))} (`global {name}`), "
+                "whose value there is not known statically")
+    if len(top) > 1:
+        how = "a loop among them" if any(isinstance(n, ast.For) for n in top) else "one per condition"
+        return f"`{name}` is bound {len(top)} times at module level ({how})"
+    if len(top) == 1 and isinstance(top[0], ast.Assign) and not isinstance(top[0].value, ast.Constant):
+        return (f"it depends on module-level `{name} = {_short(top[0].value)}`, whose value is "
+                "not known statically")
     return None
+
+
+def _module_bindings(name: str, body: list, top: list[ast.AST], setters: list[str]) -> None:
+    """Collect the statements binding ``name`` at module level into ``top``, and the functions
+    that assign it through ``global`` into ``setters`` (class bodies bind their own names)."""
+    for node in body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            declared = any(isinstance(n, ast.Global) and name in n.names for n in ast.walk(node))
+            if declared and any(_binds(n, name) for n in ast.walk(node)):
+                setters.append(node.name)
+            continue
+        if isinstance(node, ast.ClassDef):
+            continue
+        if _binds(node, name):
+            top.append(node)
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            inner = getattr(node, field, None)
+            if inner:
+                _module_bindings(name, inner, top, setters)
+
+
+def _binds(node: ast.AST, name: str) -> bool:
+    """Whether the statement ``node`` itself binds ``name`` (an import or an assignment)."""
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return any((a.asname or a.name.split(".")[0]) == name for a in node.names)
+    if isinstance(node, ast.Assign):
+        return any(isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt))
+    if isinstance(node, (ast.AnnAssign, ast.AugAssign)):
+        return isinstance(node.target, ast.Name) and node.target.id == name
+    if isinstance(node, ast.For):
+        return any(isinstance(t, ast.Name) and t.id == name for t in ast.walk(node.target))
+    return False
 
 
 def _binding_of(name: str, scope: ast.AST | None, call: ast.Call) -> str | None:

@@ -323,7 +323,8 @@ def test_membership_in_a_tuple_is_decided_only_for_known_items(analyse):
 
 def test_an_unknown_joined_with_constants_keeps_them_as_hints_only(analyse):
     """``env or default``, an if/else and a loop: the constants survive as hints of ⊤; no
-    branch is decided on them and nothing is computed from them."""
+    branch is decided on them, and only text is built from them (``topic + '/filtered'`` may be
+    ``/scan/filtered``, itself only a hint)."""
     a = analyse({"m.py": """
         import os
 
@@ -342,7 +343,7 @@ def test_an_unknown_joined_with_constants_keeps_them_as_hints_only(analyse):
     """})
     assert a.value("m", "topic").is_top and a.value("m", "topic").hinted() == ["/scan"]
     assert a.value("m", "frame").hinted() == ["sim_base"]
-    assert a.value("m", "suffixed") == TOP
+    assert a.value("m", "suffixed").is_top and a.value("m", "suffixed").hinted() == ["/scan/filtered"]
     assert sorted(a.value("m", "default_topic").consts()) == [False, True]
     assert a.strings("m", "picked") == ["custom", "default"]
     assert a.value("m", "label") == TOP

@@ -21,7 +21,8 @@ from .containers import MAX_DICT_ITEMS, may_be_filled_elsewhere
 from .engine import Effect
 from .fieldclasses import Field
 from .fixtures import is_test_class, test_class_calls
-from .folding import PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, safe_template, wide_template
+from .folding import (PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, fold_text, safe_template,
+                      wide_template)
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
 from .program import Function
@@ -629,8 +630,13 @@ class CallSemantics:
                     for atom in scope.get(store.on, TOP):
                         if isinstance(atom, Obj):
                             self.an.write(("a", atom.site, key), value)
+        passed = {name: (args_param, keywords_param)
+                  for name, args_param, keywords_param in model.callback_args}
         for name in model.callbacks:
-            for atom in bound.get(name, BOTTOM):
+            value = bound.get(name, BOTTOM)
+            if name in passed:
+                value = _partial(value, _passed(bound, *passed[name]))
+            for atom in value:
                 self.schedule_callback(atom)
         return result
 
@@ -861,13 +867,13 @@ class CallSemantics:
             names = sorted(args.kw)
             pools = [recv] + list(args.pos) + [args.kw[k] for k in names]
             n = len(args.pos)
-            return fold(lambda s, *v: s.format(*v[:n], **dict(zip(names, v[n:]))), pools)
+            return fold_text(lambda s, *v: s.format(*v[:n], **dict(zip(names, v[n:]))), pools)
         if name == "join" and args.pos:
             out = BOTTOM
             for atom in args.pos[0]:
                 if not isinstance(atom, Seq):
                     return TOP
-                out = out.join(fold(lambda s, *parts: s.join(parts), [recv, *atom.items]))
+                out = out.join(fold_text(lambda s, *parts: s.join(parts), [recv, *atom.items]))
             return out if not args.pos[0].is_top else TOP
         if args.kw or args.star:
             return TOP
@@ -1032,6 +1038,13 @@ def _rooted(value: Value) -> list[str] | None:
     return sorted({posixpath.join("/", c or "") for c in consts})
 
 
+def _namespace_front(value: Value) -> list[str] | None:
+    """Every possible node namespace as the front of a fully qualified name, as rcl joins
+    them: ``None``, ``""`` and ``"/"`` give ``""`` (``/name``), ``"ns"`` gives ``"/ns"``."""
+    rooted = _rooted(value)
+    return sorted({r.rstrip("/") for r in rooted}) if rooted is not None else None
+
+
 def _dotted(value: Value) -> list[str] | None:
     """Every possible prefix as the front of a dotted name: ``''`` and ``None`` stay empty,
     ``'ns'`` becomes ``'ns.'``."""
@@ -1042,7 +1055,8 @@ def _dotted(value: Value) -> list[str] | None:
 
 
 #: Filters usable in library-model key templates (``{param|filter}``).
-KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted}
+KEY_FILTERS = {"argparse_dest": _argparse_dest, "upper": _upper, "rooted": _rooted, "dotted": _dotted,
+               "namespace_front": _namespace_front}
 
 
 def _store_scopes(store, bound: dict) -> Iterator[dict]:
@@ -1087,6 +1101,17 @@ def _partial(func: Value, given: dict[str, Value]) -> Value:
             known = isinstance(seq, Seq) and kw is not None
             bindings.append((seq.items if isinstance(seq, Seq) else (), kw or (), not known))
     return atoms(Partial(target, pos, kw, star) for target in func for pos, kw, star in bindings)
+
+
+def _passed(bound: dict, args_param: str | None, keywords_param: str | None) -> dict[str, Value]:
+    """The sequence and mapping a library calls a callback with (``Thread(target, args=(node,))``),
+    as :func:`_partial` takes them; ``None`` (``kwargs=None``, the default) passes nothing."""
+    out = {}
+    for key, param in (("args", args_param), ("keywords", keywords_param)):
+        value = bound.get(param, TOP) if param is not None else None
+        if value is not None and value.consts() != [None]:
+            out[key] = value
+    return out
 
 
 def _string_keys(mapping: DictAtom) -> tuple[tuple[str, Value], ...] | None:

@@ -9,7 +9,7 @@ import ast
 import itertools
 from typing import Callable
 
-from .folding import BINOPS, CMPOPS, SAME_TEXT, UNARYOPS, fold
+from .folding import BINOPS, CMPOPS, SAME_TEXT, UNARYOPS, fold, fold_text
 from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
@@ -74,12 +74,12 @@ class ExpressionSemantics:
                 if part.conversion in (ord("r"), ord("a")):
                     value = fold(repr, [value])
                 spec = self.eval(part.format_spec) if part.format_spec else const("")
-                parts.append(fold(format, [value, spec]))
+                parts.append(fold_text(format, [value, spec]))
                 pieces.append(value if plain else parts[-1])
             else:
                 parts.append(TOP)
                 pieces.append(TOP)
-        return joined(fold(lambda *p: "".join(p), parts), pieces)
+        return joined(fold_text(lambda *p: "".join(p), parts), pieces)
 
     def e_BinOp(self, node: ast.BinOp) -> Value:
         return self.binop(node.op, self.eval(node.left), self.eval(node.right))
@@ -90,7 +90,7 @@ class ExpressionSemantics:
         fn = BINOPS.get(type(op))
         if fn is None:
             return TOP
-        if isinstance(op, ast.Mod) and right.consts() is None:
+        if isinstance(op, ast.Mod) and right.consts() is None and not right.hints:
             tuples = _const_tuples(right)
             if tuples is None:
                 return TOP
@@ -101,8 +101,8 @@ class ExpressionSemantics:
                 a, b = items
                 return atoms([Seq(a.kind, a.items + b.items)])
         if isinstance(op, ast.Add):
-            return joined(fold(fn, [left, right]), [left, right])
-        return fold(fn, [left, right])
+            return joined(fold_text(fn, [left, right]), [left, right])
+        return fold_text(fn, [left, right]) if isinstance(op, ast.Mod) else fold(fn, [left, right])
 
     def e_UnaryOp(self, node: ast.UnaryOp) -> Value:
         value = self.eval(node.operand)
@@ -134,6 +134,13 @@ class ExpressionSemantics:
         return result if result is not None else BOOLS
 
     def compare(self, op: ast.cmpop, left: Value, right: Value) -> Value:
+        """``left op right``; decided on an overridable default (``args.mode not in (...)``,
+        ``args.mode`` being argparse's ``None`` default), the answer is one too: it names what
+        runs by default but never decides a branch (a required argument is never its default)."""
+        result = self._compare(op, left, right)
+        return soften(result) if left.soft or right.soft or _holds_soft(right) else result
+
+    def _compare(self, op: ast.cmpop, left: Value, right: Value) -> Value:
         fn = CMPOPS[type(op)]
         if left.consts() is not None and right.consts() is not None:
             return fold(fn, [left, right])
@@ -459,6 +466,10 @@ class ExpressionSemantics:
                 else:
                     star = True
         result = self.call(func, Args(args, kwargs, star), node)
+        if holder.soft and all(isinstance(a, Const) and isinstance(a.value, str) for a in holder):
+            # ``str(param.value).strip().lower()``: text computed from an overridable default
+            # is one too (a string method's bound receiver keeps no mark of its own).
+            result = soften(result)
         target = node.func
         if isinstance(target, ast.Attribute) and target.attr == "get" and holder.is_top \
                 and len(args) == 2 and not kwargs and not star:
@@ -568,6 +579,11 @@ def _membership(left: Value, right: Value, negate: bool) -> Value:
             else:
                 out.update((True, False))
     return atoms(Const.of(x) for x in out) if out else BOOLS
+
+
+def _holds_soft(value: Value) -> bool:
+    """Whether an item of a known sequence is an overridable default (``x in (args.a, 'b')``)."""
+    return any(item.soft for atom in value if isinstance(atom, Seq) for item in atom.items)
 
 
 def _member_sites(value: Value) -> frozenset[str] | None:

@@ -15,7 +15,7 @@ import re
 import string
 from typing import Any, Callable
 
-from .values import MAX_ATOMS, TOP, Value, atoms, Const
+from .values import MAX_ATOMS, TOP, Value, atoms, Const, from_input
 
 #: Longest string/bytes a folded operation may produce.
 MAX_STR = 4096
@@ -160,6 +160,34 @@ def fold(fn: Callable[..., Any], operands: list[Value], wrap=None) -> Value:
         else:
             out.append(Const.of(result))
     return atoms(out, soft)
+
+
+def fold_text(fn: Callable[..., Any], operands: list[Value]) -> Value:
+    """:func:`fold` for building text (``+``, f-strings): where a piece is unknown but for a few
+    strings it may be (``sys.argv[1] if ... else 'robot'``), the text those strings give is kept
+    as what the unknown result may be, so ``f'/{ns}/pose'`` still names ``/robot/pose`` as only
+    partly known. Only string results are kept; a fully unknown piece leaves nothing known.
+    An overridable default of ``None`` (an option not given) is never text: code that formats
+    it runs with the value given instead, so it is unknown there, never ``'None'``."""
+    operands = [_given(v) for v in operands]
+    result = fold(fn, operands)
+    if not result.is_top or result.is_saturated or any(v.is_top and not v.hints for v in operands) \
+            or not any(v.is_top for v in operands):
+        return result
+    known = fold(fn, [atoms(v.hints) if v.is_top else v for v in operands])
+    strings = known.strings()
+    if not strings:
+        return result
+    return from_input(result.join(known), result.origin) if result.origin is not None \
+        else result.join(known)
+
+
+def _given(value: Value) -> Value:
+    """``value`` without an overridable ``None`` default: the other constants, as hints of ⊤."""
+    consts = value.consts() if value.soft else None
+    if not consts or None not in consts:
+        return value
+    return TOP.join(atoms(Const.of(c) for c in consts if c is not None))
 
 
 def call_str_method(name: str, receiver: Value, args: list[Value]) -> Value:

@@ -229,7 +229,9 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if not listed or current.origin is not None or (
                 current.consts() is not None and set(current.consts()) <= set(listed)):
             return env
-        known = current.consts()
+        # An overridable default (argparse's ``None`` for a required argument) is only one
+        # of the values: past the guard the value is any constant the guard lists.
+        known = None if current.soft else current.consts()
         kept = [c for c in listed if known is None or c in known]
         if not kept:
             return env

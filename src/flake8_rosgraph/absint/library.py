@@ -195,6 +195,9 @@ class FunctionModel:
     effects: tuple[EffectSpec, ...] = ()
     stores: tuple[StoreSpec, ...] = ()
     callbacks: tuple[str, ...] = ()
+    #: For callbacks the library calls with arguments the caller gave beside them
+    #: (``Thread(target=f, args=(node,))``): ``(callback, args parameter, keywords parameter)``.
+    callback_args: tuple[tuple[str, str | None, str | None], ...] = ()
     #: Why a call blocks its thread until something else happens (``None``: it returns
     #: promptly). Opaque to the analyser; rules about callbacks read it.
     blocking: str | None = None
@@ -358,7 +361,8 @@ class LibraryModel:
 
 
 # -- loading ----------------------------------------------------------------------------
-_FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "blocking", "blocks_for"}
+_FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "callback_args", "blocking",
+              "blocks_for"}
 _CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods", "stand_in_for_unresolved",
                "entry_args", "registered_as"}
 _TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta", "true_instances"}
@@ -448,10 +452,31 @@ def _function(qualname: str, raw: Any, where: str) -> FunctionModel:
             raise StubError(f"{where}.blocks_for: only meaningful with blocking = \"…\"")
         if blocks_for not in {p.name for p in signature.params}:
             raise StubError(f"{where}.blocks_for: {blocks_for!r} is not a parameter")
+    callbacks = _strings(raw.get("callbacks", []), where + ".callbacks")
     return FunctionModel(qualname, signature, _returns(raw.get("returns"), where + ".returns"),
-                         tuple(effects), tuple(stores),
-                         _strings(raw.get("callbacks", []), where + ".callbacks"),
+                         tuple(effects), tuple(stores), callbacks,
+                         _callback_args(raw.get("callback_args", {}), callbacks, signature,
+                                        where + ".callback_args"),
                          blocking, blocks_for)
+
+
+def _callback_args(raw: Any, callbacks: tuple[str, ...], signature: Signature,
+                   where: str) -> tuple[tuple[str, str | None, str | None], ...]:
+    """``callback_args = { target = { args = "args", keywords = "kwargs" } }``: the parameters
+    holding the positional sequence and the keyword mapping a callback is called with."""
+    params = {p.name for p in signature.params}
+    out = []
+    for callback, spec in sorted(_table(raw, where).items()):
+        spec = _table(spec, f"{where}.{callback}")
+        if callback not in callbacks:
+            raise StubError(f"{where}.{callback}: not one of callbacks")
+        if not spec or set(spec) - {"args", "keywords"}:
+            raise StubError(f"{where}.{callback}: expected args = \"param\" and/or keywords = \"param\"")
+        for key, name in spec.items():
+            if name not in params:
+                raise StubError(f"{where}.{callback}.{key}: {name!r} is not a parameter")
+        out.append((callback, spec.get("args"), spec.get("keywords")))
+    return tuple(out)
 
 
 def _class(qualname: str, raw: Any, where: str) -> ClassModel:
