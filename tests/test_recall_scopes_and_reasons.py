@@ -817,6 +817,6 @@ def test_a_parameter_with_a_default_on_some_paths_says_so(tmp_path: Path) -> Non
     status, why = reasons(write(tmp_path, files))[("agent_commands/agent_commands/commands.py", 16)]
     assert status == "unknown"
     assert why[0].startswith("unknown name (known only partly: '/msg4' on some paths")
-    assert why[1] == ("it is built from ROS parameter 'commands_to_agent_topic' of its node, without "
-                      "a default in code on some paths; where a launch file sets them, "
-                      "`graph --launch FILE` shows the name")
+    assert why[1] == ("it is built from ROS parameter 'commands_to_agent_topic' of its node, with no "
+                      "default in code that reaches this call on some paths; where a launch file sets "
+                      "them, `graph --launch FILE` shows the name")
