@@ -208,10 +208,13 @@ class AbsenceRule(Rule):
         site works in some configuration and the other value is not reported.
         Each launched instance of a node is a configuration of its own: a
         parameter file that names the topic wrongly breaks the node it
-        configures, however well the other launch files set it.
+        configures, however well the other launch files set it. So is each
+        call of a shared helper that names its end alone
+        (:attr:`~flake8_rosgraph.graph.model.Entity.own_call`): ``self._client(T, '/strat')``
+        dangles however well ``self._client(T, '/stop')`` is served.
         """
         def site(ep: Endpoint) -> tuple:
-            return ep.entity.location, id(ep.node)
+            return ep.entity.location, id(ep.node), ep.entity.name if ep.entity.own_call else None
 
         alternatives = Counter(site(ep) for ep in index.endpoints(self.kind))
         dangling_at = Counter(site(ep) for ep in dangling)
