@@ -301,6 +301,37 @@ def test_an_invalid_launch_name_is_reported_at_the_launch_file_only(tmp_path, an
     assert [(code, where) for code, where, _ in found] == [("ROS203", LAUNCH + "lidar.launch.py:7")]
 
 
+CAMERA_GROUP = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument, GroupAction
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node, PushRosNamespace
+
+
+    def generate_launch_description():
+        camera = GroupAction([
+            PushRosNamespace(LaunchConfiguration('camera_name')),
+            Node(package='drivers', executable='camera', name='driver', namespace={namespace}),
+        ])
+        return LaunchDescription([DeclareLaunchArgument('camera_name', default_value='camera'), camera])
+    """
+
+
+def test_an_empty_namespace_under_a_pushed_one_runs_in_the_pushed_one(tmp_path, analyse_root):
+    """launch_ros strips the trailing '/' of ``'/camera' + '/' + ''`` (and of ``'/camera/'``): the
+    camera driver runs as ``/camera/driver``, not in the invalid namespace ``/camera/`` (an
+    Orbbec camera's 40 launch files, each reported)."""
+    for namespace in ("''", "'/camera/'"):
+        root = workspace(tmp_path / namespace.strip("'/"), {"camera.launch.py": CAMERA_GROUP.format(namespace=namespace)})
+        assert launched(analyse_root, root, "camera.launch.py") == [("/camera/driver", "Camera")]
+        assert findings(analyse_root, root, ("ROS203",)) == []
+
+
+def test_an_invalid_namespace_under_a_pushed_one_is_still_reported(tmp_path, analyse_root):
+    root = workspace(tmp_path, {"camera.launch.py": CAMERA_GROUP.format(namespace="'front cam'")})
+    assert [code for code, _, _ in findings(analyse_root, root, ("ROS203",))] == ["ROS203"]
+
+
 # -- arguments an include passes but the analysis cannot read -------------------------------------
 
 INCLUDED = """
