@@ -134,3 +134,62 @@ def test_one_call_choosing_between_names_is_still_one_client(tmp_path: Path) -> 
     served alternative makes it work, the other is not reported."""
     root = bridge_workspace(tmp_path, start="'/asr/start_session' if self._lock else '/asr/begin'")
     assert findings(root, ["ROS008"]) == []
+
+
+# -- a test's publisher whose QoS the product's subscription refuses --------------------------------
+MANAGER = """
+    import rclpy
+    from geographic_msgs.msg import GeoPath
+    from rclpy.node import Node
+
+
+    class NavManager(Node):
+        def __init__(self):
+            super().__init__('nav_manager')
+            self.declare_parameter('waypoints_topic', '/gps_waypoints')
+            topic = self.get_parameter('waypoints_topic').value
+            self.create_subscription(GeoPath, topic, self.on_waypoints, 10)
+
+        def on_waypoints(self, msg):
+            self.get_logger().info(f'{len(msg.poses)} waypoints')
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(NavManager())
+"""
+
+NAV_TEST = """
+    import rclpy
+    from geographic_msgs.msg import GeoPath
+    from rclpy.qos import qos_profile_sensor_data
+
+
+    def test_manager_follows_waypoints():
+        rclpy.init()
+        node = rclpy.create_node('waypoint_feeder')
+        publisher = node.create_publisher(GeoPath, '/gps_waypoints', {qos})
+        publisher.publish(GeoPath())
+        node.destroy_node()
+        rclpy.shutdown()
+"""
+
+
+def nav_workspace(root: Path, qos: str) -> Path:
+    return write(root, {
+        **ament_python("nav_manager", "'manager = nav_manager.manager:main'"),
+        "nav_manager/nav_manager/manager.py": MANAGER,
+        "nav_manager/test/test_waypoints.py": NAV_TEST.format(qos=qos),
+    })
+
+
+def test_a_test_publisher_the_product_refuses_is_reported_at_the_test(tmp_path: Path) -> None:
+    """rcdt_robotics: a test feeds the product's reliable subscription through a best-effort
+    publisher; the product does not see test fixtures, so the pair was never compared."""
+    reported = findings(nav_workspace(tmp_path, "qos_profile_sensor_data"), ["ROS005"])
+    assert sites(reported) == [("ROS005", "nav_manager/test/test_waypoints.py", 9)]
+    assert "best-effort publisher, reliable subscription" in reported[0][3]
+
+
+def test_a_test_publisher_of_matching_qos_is_quiet(tmp_path: Path) -> None:
+    assert findings(nav_workspace(tmp_path, "10"), ["ROS005"]) == []

@@ -57,7 +57,9 @@ class QosIncompatible(Rule):
     an object attribute (`self.qos.reliability = …`) makes that policy unknown,
     since the attribute keeps both profiles. The finding is at the
     subscription, which requests more than the publisher offers; the publisher
-    is the related location. Ends that launch files start apart (a namespace,
+    is the related location; a test fixture's publisher feeding the product
+    it tests is reported at the fixture's end, with the product's subscription
+    as related location (the test is what to fix). Ends that launch files start apart (a namespace,
     a remap) but that meet when both programs run as written (`ros2 run`) are
     compared too: the message says so.
 
@@ -99,3 +101,16 @@ class QosIncompatible(Rule):
                     message = (f"QoS of subscription to '{sub.entity.name}' cannot match the publisher at "
                                f"{pub.entity.location.short()}: {'; '.join(errors)}")
                     yield Finding(sub.entity.location, self.code, message, (related(pub.entity),))
+        # A test fixture's publisher feeds the product it tests, which does not see the fixture
+        # (:mod:`.fixtures`): the pair is found from the fixture's side, and reported at its end.
+        for pub in index.endpoints("publishers"):
+            if pub.scope is None or not pub.entity.qos:
+                continue
+            for sub in index.peers(pub):
+                if sub.scope is not None or not sub.entity.qos:
+                    continue
+                errors = qos_errors(pub.entity.qos, sub.entity.qos)
+                if errors:
+                    message = (f"QoS of publisher to '{pub.entity.name}' cannot match the subscription at "
+                               f"{sub.entity.location.short()}: {'; '.join(errors)}")
+                    yield Finding(pub.entity.location, self.code, message, (related(sub.entity),))
