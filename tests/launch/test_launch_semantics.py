@@ -322,7 +322,8 @@ def test_an_empty_namespace_under_a_pushed_one_runs_in_the_pushed_one(tmp_path, 
     camera driver runs as ``/camera/driver``, not in the invalid namespace ``/camera/`` (an
     Orbbec camera's 40 launch files, each reported)."""
     for namespace in ("''", "'/camera/'"):
-        root = workspace(tmp_path / namespace.strip("'/"), {"camera.launch.py": CAMERA_GROUP.format(namespace=namespace)})
+        launch = {"camera.launch.py": CAMERA_GROUP.format(namespace=namespace)}
+        root = workspace(tmp_path / namespace.strip("'/"), launch)
         assert launched(analyse_root, root, "camera.launch.py") == [("/camera/driver", "Camera")]
         assert findings(analyse_root, root, ("ROS203",)) == []
 
