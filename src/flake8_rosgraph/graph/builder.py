@@ -24,8 +24,8 @@ from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, Extern
                              Joined, Obj, Record, Seq, Slot, Coll, Value, wrapped)
 from . import names
 from .parameter_switches import switched_off
-from .site_calls import SiteCalls
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
+from .site_calls import SiteCalls
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .unseen_calls import HELD, SELF, helpers_handed, names_handed_to_unseen_code
 from .usage_builder import build_usage
