@@ -193,3 +193,11 @@ def test_a_test_publisher_the_product_refuses_is_reported_at_the_test(tmp_path: 
 
 def test_a_test_publisher_of_matching_qos_is_quiet(tmp_path: Path) -> None:
     assert findings(nav_workspace(tmp_path, "10"), ["ROS005"]) == []
+
+
+def test_a_helper_forwarding_names_nobody_near_publishes_is_an_interface(tmp_path: Path) -> None:
+    """mrover's GUI bridge subscribes, through one helper, to every topic it forwards, many of
+    them published by firmware bridges the analysis does not see: a helper's unserved name is
+    reported only as a slip of a name the workspace uses, never as the odd one out."""
+    root = bridge_workspace(tmp_path, start="'/arm/calibrate'")
+    assert findings(root, ["ROS008"]) == []
