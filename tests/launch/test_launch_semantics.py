@@ -301,6 +301,80 @@ def test_an_invalid_launch_name_is_reported_at_the_launch_file_only(tmp_path, an
     assert [(code, where) for code, where, _ in found] == [("ROS203", LAUNCH + "lidar.launch.py:7")]
 
 
+CAMERA_GROUP = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument, GroupAction
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node, PushRosNamespace
+
+
+    def generate_launch_description():
+        camera = GroupAction([
+            PushRosNamespace(LaunchConfiguration('camera_name')),
+            Node(package='drivers', executable='camera', name='driver', namespace={namespace}),
+        ])
+        return LaunchDescription([DeclareLaunchArgument('camera_name', default_value='camera'), camera])
+    """
+
+
+def test_an_empty_namespace_under_a_pushed_one_runs_in_the_pushed_one(tmp_path, analyse_root):
+    """launch_ros strips the trailing '/' of ``'/camera' + '/' + ''`` (and of ``'/camera/'``): the
+    camera driver runs as ``/camera/driver``, not in the invalid namespace ``/camera/`` (an
+    Orbbec camera's 40 launch files, each reported)."""
+    for namespace in ("''", "'/camera/'"):
+        launch = {"camera.launch.py": CAMERA_GROUP.format(namespace=namespace)}
+        root = workspace(tmp_path / namespace.strip("'/"), launch)
+        assert launched(analyse_root, root, "camera.launch.py") == [("/camera/driver", "Camera")]
+        assert findings(analyse_root, root, ("ROS203",)) == []
+
+
+def test_an_invalid_namespace_under_a_pushed_one_is_still_reported(tmp_path, analyse_root):
+    root = workspace(tmp_path, {"camera.launch.py": CAMERA_GROUP.format(namespace="'front cam'")})
+    assert [code for code, _, _ in findings(analyse_root, root, ("ROS203",))] == ["ROS203"]
+
+
+LOCALIZATION = """
+    from launch import LaunchDescription
+    from launch.actions import DeclareLaunchArgument, LogInfo, OpaqueFunction
+    from launch.substitutions import LaunchConfiguration
+    from launch_ros.actions import Node
+
+
+    def launch_setup(context):
+        map_server = Node(package='nav2_map_server', executable='map_server', name='map_server',
+                          namespace='')
+        actions = [map_server]
+        if LaunchConfiguration('use_slam').perform(context) == 'true':
+            actions.extend([Node(package='slam_toolbox', executable='localization_slam_toolbox_node',
+                                 name='slam_toolbox')])
+        else:
+            actions.extend([LogInfo(msg='static map->odom'),
+                            Node(package='nav2_map_server', executable='map_server', name={second},
+                                 namespace='')])
+        return actions
+
+
+    def generate_launch_description():
+        return LaunchDescription([DeclareLaunchArgument('use_slam', default_value='true'),
+                                  OpaqueFunction(function=launch_setup)])
+    """
+
+
+def test_an_action_both_branches_of_a_launch_function_return_starts_once(tmp_path, analyse_root):
+    """The map server both lists of a launch function hold (one per branch of its ``if``) is
+    one action: it was started once per list, and reported as a duplicate of itself."""
+    root = workspace(tmp_path, {"localization.launch.py": LOCALIZATION.format(second="'odom_tf'")})
+    assert findings(analyse_root, root, ("ROS007",)) == []
+    started = [n.name for n in analyse_root(root).system("localization.launch.py").nodes]
+    assert sorted(started) == ["map_server", "odom_tf", "slam_toolbox"]
+
+
+def test_a_second_action_of_the_same_name_in_one_branch_is_still_reported(tmp_path, analyse_root):
+    root = workspace(tmp_path, {"localization.launch.py": LOCALIZATION.format(
+        second="'map_server'")})
+    assert [code for code, _, _ in findings(analyse_root, root, ("ROS007",))] == ["ROS007"]
+
+
 # -- arguments an include passes but the analysis cannot read -------------------------------------
 
 INCLUDED = """

@@ -25,6 +25,7 @@ from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, Extern
 from . import names
 from .parameter_switches import switched_off
 from .ros_args import CommandLine, command_line, process_command_lines, with_process
+from .site_calls import SiteCalls
 from .model import Diagnostic, Entity, Location, RosGraph, RosNode
 from .unseen_calls import HELD, SELF, helpers_handed, names_handed_to_unseen_code
 from .usage_builder import build_usage
@@ -232,15 +233,18 @@ class GraphBuilder:
             if "unresolved_base" in dict(eff.args):
                 self._add_presumed_node(eff)
         entities: dict[int, dict[tuple, Entity]] = {}
+        calls = SiteCalls()
         for eff in effects:
             for node in self._owners(eff):
                 bucket = entities.setdefault(id(node), {})
-                for entity in self._entities(eff, node):
+                made = self._entities(eff, node)
+                calls.add(node, made)
+                for entity in made:
                     bucket.setdefault(_entity_order(entity), entity)
         graph = RosGraph()
         for node in self.nodes.values():
             bucket = entities.get(id(node), {})
-            node.entities = [bucket[k] for k in sorted(bucket)]
+            node.entities = [calls.marked(node, bucket[k]) for k in sorted(bucket)]
             graph.nodes.append(node)
         graph.nodes.sort(key=lambda n: (n.fqn or "", n.location))
         try:

@@ -79,6 +79,10 @@ class Entity:
     #: Where the launch file or parameter file that names the entity sets its (first)
     #: parameter (for a launched node only), so that a finding can point at the value.
     name_set_at: Location | None = None
+    #: The creation site runs in several calls of a shared helper (``self._client(T, '/a')``,
+    #: ``self._client(T, '/b')`` through one ``create_client``), and one of them names this end
+    #: alone: the site's other names are other ends, not other configurations of this one.
+    own_call: bool = False
 
     @property
     def from_parameter(self) -> str | None:

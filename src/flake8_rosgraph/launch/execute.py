@@ -91,13 +91,19 @@ _TRUTH = {"true": True, "1": True, "false": False, "0": False}
 
 
 def prefix_namespace(base: str | None, ns: str | None) -> str | None:
-    """launch_ros ``prefix_namespace`` followed by ``make_namespace_absolute``."""
+    """launch_ros ``prefix_namespace`` followed by ``make_namespace_absolute``.
+
+    Like launch_ros (every distribution since foxy), the result loses its trailing ``/``: a
+    node given ``namespace=''`` under ``PushRosNamespace('camera')`` runs in ``/camera``,
+    not in the invalid ``/camera/``, and so does one given ``namespace='/camera/'``."""
     if base is not None and ns is not None:
-        combined = ns if ns.startswith("/") else ("/" + ns if base == "/" else base + "/" + ns)
+        combined = ns if ns.startswith("/") or not base else ("/" + ns if base == "/" else base + "/" + ns)
     else:
         combined = base if base is not None else ns
     if combined is None:
         return None
+    if combined != "/":
+        combined = combined.rstrip("/")
     return combined if combined.startswith("/") else "/" + combined
 
 

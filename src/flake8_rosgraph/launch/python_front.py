@@ -140,18 +140,27 @@ class PythonFront:
             out.extend(_alternative(ld, ordered, actions, at) if len(ordered) > 1 else actions)
         return out, None
 
-    def entity_list(self, value: Value, at: Location) -> list[Action]:
+    def entity_list(self, value: Value, at: Location, listed: frozenset[Obj] = frozenset()) -> list[Action]:
+        """The actions of a list of launch entities. Several lists are alternatives (the lists a
+        launch function returns from the two branches of an ``if``): an action object an earlier
+        alternative (or an enclosing one: ``listed``) already lists, such as the map server both
+        branches start, is one action, started once, not once per alternative."""
         if value.is_top:
             return [Unsupported(at, "a list of launch entities the analysis cannot determine")]
         out: list[Action] = []
+        seen = set(listed)
         for atom in sorted(value, key=_order):
+            before = frozenset(seen)
             if isinstance(atom, Seq):
                 for item in atom.items:
-                    out.extend(self.entity_list(item, at))
+                    out.extend(self.entity_list(item, at, before))
+                    seen.update(_objects(item))
             elif isinstance(atom, Coll):
-                out.extend(self.entity_list(atom.elem, at))
+                out.extend(self.entity_list(atom.elem, at, before))
+                seen.update(_objects(atom.elem))
             elif isinstance(atom, Obj):
-                out.extend(self.action(atom))
+                if atom not in listed:
+                    out.extend(self.action(atom))
             elif atom != Const.of(None):
                 out.append(Unsupported(at, "a launch entity the analysis cannot determine"))
         return out
@@ -515,3 +524,8 @@ def _scalar(text: str) -> Any:
         except ValueError:
             pass
     return text
+
+
+def _objects(value: Value) -> set[Obj]:
+    """The heap objects among the atoms of ``value``."""
+    return {atom for atom in value if isinstance(atom, Obj)}

@@ -187,9 +187,12 @@ class AbsenceRule(Rule):
         mostly_outside = _mostly_dangling([ep for ep in index.endpoints(self.kind) if index.peers(ep)],
                                           unexplained)
         for endpoint in dangling:
+            # A helper called once per name (a bridge forwarding a list of topics) is how
+            # interfaces are built: such an end is reported only as a slip of a used name.
             interface = (id(endpoint.node) not in wired
                          or id(endpoint.node) in mostly_outside
                          or id(endpoint) in excused
+                         or endpoint.entity.own_call
                          or for_a_tool(endpoint.entity.type))
             yield from self._report(endpoint, near_misses, interface, scopes, id(endpoint) in slips)
 
@@ -208,10 +211,14 @@ class AbsenceRule(Rule):
         site works in some configuration and the other value is not reported.
         Each launched instance of a node is a configuration of its own: a
         parameter file that names the topic wrongly breaks the node it
-        configures, however well the other launch files set it.
+        configures, however well the other launch files set it. So is each
+        call of a shared helper that names its end alone
+        (:attr:`~flake8_rosgraph.graph.model.Entity.own_call`): ``self._client(T, '/strat')``
+        dangles however well ``self._client(T, '/stop')`` is served (and is reported as
+        the slip of ``/start`` it is; a helper's end with no near name is an interface).
         """
         def site(ep: Endpoint) -> tuple:
-            return ep.entity.location, id(ep.node)
+            return ep.entity.location, id(ep.node), ep.entity.name if ep.entity.own_call else None
 
         alternatives = Counter(site(ep) for ep in index.endpoints(self.kind))
         dangling_at = Counter(site(ep) for ep in dangling)

@@ -68,7 +68,9 @@ class PublisherWithoutSubscriber(AbsenceRule):
     connected; the nodes of two test modules in a test folder never run
     together (a misspelling is still named from the other module, which spells
     the name meant). Ends created by a shared helper function sit at the helper's
-    creation call, where several count as alternatives of one site. When
+    creation call; the names one call of the helper may give (`a if sim else b`)
+    count as alternatives of one site, the names separate calls give as separate
+    ends (`self._client(T, '/start')`, `self._client(T, '/stop')`). When
     flake8 checks only some files (pre-commit), a near-name finding whose
     end is not checked is shown at the checked near end.
 

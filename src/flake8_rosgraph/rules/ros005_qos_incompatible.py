@@ -6,7 +6,7 @@ from typing import Iterator
 from ..graph.model import RosGraph
 from .base import Finding, Rule, RuleConfig
 from .qos_compat import qos_errors
-from .topics import EndpointIndex
+from .topics import Endpoint, EndpointIndex
 from .vocabulary import related
 from .written import also_as_written
 
@@ -57,7 +57,9 @@ class QosIncompatible(Rule):
     an object attribute (`self.qos.reliability = …`) makes that policy unknown,
     since the attribute keeps both profiles. The finding is at the
     subscription, which requests more than the publisher offers; the publisher
-    is the related location. Ends that launch files start apart (a namespace,
+    is the related location; a test fixture's publisher feeding the product
+    it tests is reported at the fixture's end, with the product's subscription
+    as related location (the test is what to fix). Ends that launch files start apart (a namespace,
     a remap) but that meet when both programs run as written (`ros2 run`) are
     compared too: the message says so.
 
@@ -89,13 +91,25 @@ class QosIncompatible(Rule):
     def _pairs(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         index = EndpointIndex.build(graph)
         for sub in index.endpoints("subscriptions"):
-            if not sub.entity.qos:
-                continue
             for pub in index.peers(sub):
-                if not pub.entity.qos:
-                    continue
-                errors = qos_errors(pub.entity.qos, sub.entity.qos)
-                if errors:
-                    message = (f"QoS of subscription to '{sub.entity.name}' cannot match the publisher at "
-                               f"{pub.entity.location.short()}: {'; '.join(errors)}")
-                    yield Finding(sub.entity.location, self.code, message, (related(pub.entity),))
+                yield from self._mismatch(pub, sub, sub)
+        # A test fixture's publisher feeds the product it tests, which does not see the fixture
+        # (:mod:`.fixtures`): the pair is found from the fixture's side, and reported at its end.
+        for pub in index.endpoints("publishers"):
+            if pub.scope is not None:
+                for sub in index.peers(pub):
+                    if sub.scope is None:
+                        yield from self._mismatch(pub, sub, pub)
+
+    def _mismatch(self, pub: Endpoint, sub: Endpoint, at: Endpoint) -> Iterator[Finding]:
+        """The finding of a pair whose QoS cannot match, at ``at`` (one of its ends)."""
+        if not pub.entity.qos or not sub.entity.qos:
+            return
+        errors = qos_errors(pub.entity.qos, sub.entity.qos)
+        if not errors:
+            return
+        role, other, other_role = (("subscription", pub, "publisher") if at is sub
+                                   else ("publisher", sub, "subscription"))
+        message = (f"QoS of {role} to '{at.entity.name}' cannot match the {other_role} at "
+                   f"{other.entity.location.short()}: {'; '.join(errors)}")
+        yield Finding(at.entity.location, self.code, message, (related(other.entity),))
