@@ -3,7 +3,8 @@ over robot namespaces, one of them the empty root namespace, builds ``'/' + ns +
 only where ``ns`` is not empty, so no ``'//cmd_vel'`` is extracted (nor reported as an invalid
 name, ROS006); the same for ``if ns:`` (also ``if self.ns:`` right after storing it),
 ``x is not None``, ``x not in (...)``, ``not x`` and ``a and b``, and in the branches of
-``a if test else b`` (also in a comprehension). A loop over a written-out table evaluates a creation call once per row that
+``a if test else b`` (also in a comprehension); ``isinstance(result, String)`` tells message
+objects apart. A loop over a written-out table evaluates a creation call once per row that
 reaches it: ``if not enabled: continue`` skips the disabled rows, and the others keep their
 own types. Twins: a comparison with a value the run may replace rules nothing out, and a
 loop over a table keeps its rows where no test narrows the loop variable."""
@@ -226,3 +227,56 @@ def test_a_table_loop_creates_only_the_rows_a_branch_lets_through(tmp_path: Path
         ("publishers", "/imu/echo", "sensor_msgs/msg/Imu"),
         ("subscriptions", "/cmd_vel", "geometry_msgs/msg/Twist"),
         ("subscriptions", "/imu", "sensor_msgs/msg/Imu")]
+
+
+RESULTS = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Int32, String
+
+
+    class ResultRelay(Node):
+        '''Publishes each result on the topic of its type.'''
+
+        def __init__(self):
+            super().__init__('result_relay')
+            self.text_out = self.create_publisher(String, '/results/text', 10)
+            self.count_out = self.create_publisher(Int32, '/results/count', 10)
+            self.create_timer(1.0, self.on_timer)
+
+        def on_timer(self):
+            for result in (String(data='done'), Int32(data=3)):
+                self.forward(result)
+
+        def forward(self, result):
+            if isinstance(result, String):
+                self.text_out.publish(result)
+            else:
+                self.count_out.publish(result)
+            if not isinstance(result, (String, Int32)):
+                self.text_out.publish(result)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ResultRelay())
+"""
+
+
+def _relay(tmp_path: Path, relay: str) -> list[tuple[int, str]]:
+    root = write(tmp_path, package("result_relay", "'relay = result_relay.relay:main'", {"relay": relay}))
+    report = build_report(root, Settings())
+    return sorted((f.location.line, f.code) for f in report.findings if f.code == "ROS104")
+
+
+def test_a_type_test_tells_message_objects_apart(tmp_path: Path) -> None:
+    """``isinstance(result, String)`` takes the text result one way and the count the other
+    (generated message classes derive from ``object`` alone): neither publisher is handed the
+    other type (ROS104), and the branch no type reaches publishes nothing."""
+    assert _relay(tmp_path, RESULTS) == []
+
+
+def test_a_type_test_on_the_wrong_class_still_reports_the_mismatch(tmp_path: Path) -> None:
+    """The twin: dispatching on the wrong class publishes each result on the other's topic."""
+    assert _relay(tmp_path, RESULTS.replace("if isinstance(result, String):", "if isinstance(result, Int32):")) \
+        == [(21, "ROS104"), (23, "ROS104")]

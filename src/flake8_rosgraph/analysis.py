@@ -62,6 +62,7 @@ def load_stubs(stub_files: Sequence[Path] = ()) -> tuple[LibraryModel, list[Diag
             diagnostics.append(Diagnostic(str(path), 1, f"cannot read stub file: {exc}", "error"))
     library = load_library(texts)
     library.class_identity = generated_class_identity
+    library.closed_class = lambda qualname: generated_class_identity(qualname) is not None
     diagnostics.extend(Diagnostic(err.split(":", 1)[0], 1, "stub: " + err, "error")
                        for err in library.errors)
     return library, diagnostics

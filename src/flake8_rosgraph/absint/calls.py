@@ -794,7 +794,7 @@ class CallSemantics:
                 return atoms([DictAtom(tuple((const(k), v) for k, v in args.kw.items()))])
             return atoms([Coll("dict", TOP)])
         if name == "isinstance" and len(pos) == 2 and not args.kw and not args.star:
-            return isinstance_value(pos[0], pos[1])
+            return isinstance_value(pos[0], pos[1], self.lib.ancestors)
         if name in ("isinstance", "issubclass", "hasattr", "callable"):
             return BOOLS
         if name == "getattr" and len(pos) >= 2:

@@ -8,9 +8,9 @@ names the code never makes (a confident wrong name is worse than an unknown one)
 the ``else`` of ``if x == '':``, the way past ``x != c``, ``x is not None``, ``x not in (…)``,
 ``not x``, and each operand of ``a and b`` (both hold) or ``a or b`` (both fail).
 
-Only constants are ruled out, never objects or containers, and a value only shrinks: the
-narrowed value is a subset of the original, so where the two ways join again the join is the
-original value itself (:meth:`.values.Value.join` keeps the larger operand). A setting from
+Only constants are ruled out, and the objects a type test tells apart (``isinstance(msg, A)``:
+the other branch holds the other message); a value only shrinks: the narrowed value is a
+subset of the original, so where the two ways join again the join is the original value itself (:meth:`.values.Value.join` keeps the larger operand). A setting from
 outside keeps its origin; when every default it had is ruled out it is that setting, unknown.
 """
 from __future__ import annotations
@@ -18,10 +18,13 @@ from __future__ import annotations
 import ast
 from typing import Callable
 
-from .values import Const, Value
+from .values import Atom, Const, Value
 
-#: Keeps a constant (``True``) or rules it out.
-Keep = Callable[[object], bool]
+#: Keeps an atom of a value (``True``) or rules it out.
+Keep = Callable[[Atom], bool]
+#: A type test (``isinstance(x, C)``): the entry it tests and, per atom, whether it passes
+#: (``None``: not known); else ``None``.
+TypeTest = Callable[[ast.expr], "tuple[str, Callable[[Atom], bool | None]] | None"]
 #: Evaluates a (pure) expression where the test was evaluated.
 Evaluate = Callable[[ast.expr], Value]
 #: Constants compared at most, per test: past it nothing is ruled out.
@@ -34,23 +37,34 @@ Slot = Callable[[ast.expr], "str | None"]
 
 
 def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate, listed: Callable[[Value], list | None],
-              slot: Slot) -> list[tuple[str, Keep]]:
+              slot: Slot, type_test: TypeTest) -> list[tuple[str, Keep]]:
     """For each environment entry ``test`` constrains when it evaluates to ``holds``: its key
-    and which of its constants remain possible. ``listed`` gives the constants a container
-    value lists."""
+    and which of its atoms remain possible. ``listed`` gives the constants a container value
+    lists; ``type_test`` reads ``isinstance(x, C)`` (``msg`` one of two message objects: the
+    ``else`` of ``isinstance(msg, A)`` publishes the other one)."""
     tested = slot(test)
     if tested is not None:
-        return [(tested, lambda value: bool(value) == holds)]
+        return [(tested, _constants(lambda value: bool(value) == holds))]
+    typed = type_test(test)
+    if typed is not None:
+        name, passes = typed
+        return [(name, lambda atom: passes(atom) is not (not holds))]
     if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
-        return ruled_out(test.operand, not holds, evaluate, listed, slot)
+        return ruled_out(test.operand, not holds, evaluate, listed, slot, type_test)
     if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And) == holds:
         # ``a and b`` holds: both hold; ``a or b`` fails: both fail.
-        return [found for operand in test.values for found in ruled_out(operand, holds, evaluate, listed, slot)]
+        return [found for operand in test.values
+                for found in ruled_out(operand, holds, evaluate, listed, slot, type_test)]
     if isinstance(test, ast.Compare) and len(test.ops) == 1:
         compared = slot(test.left)
         if compared is not None:
             return _compared(compared, type(test.ops[0]), test.comparators[0], holds, evaluate, listed)
     return []
+
+
+def _constants(keep: Callable[[object], bool]) -> Keep:
+    """A rule on constants' values, as a rule on atoms: anything but a constant is kept."""
+    return lambda atom: type(atom) is not Const or keep(atom.value)
 
 
 def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evaluate,
@@ -62,7 +76,7 @@ def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evalu
         if not (isinstance(right, ast.Constant) and any(right.value is c for c in (None, True, False))):
             return []  # ``is`` compares identity: only the singletons are known to be one object
         singleton = right.value
-        return [(name, lambda value: value is not singleton)]
+        return [(name, _constants(lambda value: value is not singleton))]
     other = evaluate(right)
     if other.soft or other.origin is not None:
         return []  # a default the run may replace: what it is compared with is not known
@@ -73,7 +87,7 @@ def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evalu
         excluded = consts if consts is not None and len(consts) == 1 else None
     if not excluded or len(excluded) > MAX_RULED_OUT:
         return []
-    return [(name, lambda value: not any(_equal(value, c) for c in excluded))]
+    return [(name, _constants(lambda value: not any(_equal(value, c) for c in excluded)))]
 
 
 def _equal(value: object, other: object) -> bool:
@@ -84,13 +98,13 @@ def _equal(value: object, other: object) -> bool:
 
 
 def narrowed(value: Value, keep: Keep) -> Value:
-    """``value`` without the constants ``keep`` rules out (itself when it rules none out)."""
+    """``value`` without the atoms ``keep`` rules out (itself when it rules none out)."""
     if value.is_top:
         if not value.hints:
             return value
-        hints = frozenset(h for h in value.hints if keep(h.value))
+        hints = frozenset(h for h in value.hints if keep(h))
         return value if hints == value.hints else Value(None, hints=hints, origin=value.origin)
-    kept = frozenset(a for a in value.atoms if type(a) is not Const or keep(a.value))
+    kept = frozenset(a for a in value.atoms if keep(a))
     if kept == value.atoms:
         return value
     if not kept:  # every default ruled out (the branch is not taken by default): unknown

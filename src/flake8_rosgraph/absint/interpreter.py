@@ -209,7 +209,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         give it names it does not decide. Not a setting from outside either (its origin
         names it for a launch file)."""
         test = edge.test
-        if self._writes_nothing(test):
+        if self._writes_nothing(test) or self._type_test(test) is not None:
             env = self._without_ruled_out(env, test, edge.polarity)
         if not (isinstance(test, ast.Compare) and len(test.ops) == 1
                 and isinstance(test.left, ast.Name) and test.left.id in env
@@ -245,7 +245,22 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         return narrow([env], self._ruled_out(test, holds), self.frame.narrowed)[0]
 
     def _ruled_out(self, test: ast.expr, holds: bool) -> list:
-        return ruled_out(test, holds, self.eval, _listed_constants, self._slot)
+        return ruled_out(test, holds, self.eval, _listed_constants, self._slot, self._type_test)
+
+    def _type_test(self, test: ast.expr):
+        """``isinstance(x, C)`` with the builtin, ``x`` an entry :meth:`_slot` names and ``C``
+        written without a call: the entry, and per atom whether it passes (``None``: not
+        known); else ``None``."""
+        if not (isinstance(test, ast.Call) and isinstance(test.func, ast.Name) and test.func.id == "isinstance"
+                and len(test.args) == 2 and not test.keywords
+                and not any(isinstance(a, ast.Starred) for a in test.args)
+                and self._writes_nothing(test.args[1])):
+            return None
+        name = self._slot(test.args[0])
+        if name is None or self.load_name("isinstance") != atoms([Extern("builtins.isinstance")]):
+            return None
+        classes = self.eval(test.args[1])
+        return name, lambda atom: _decided(isinstance_value(atoms([atom]), classes, self.lib.ancestors))
 
     def _slot(self, expr: ast.expr) -> str | None:
         """The environment entry ``expr`` reads: a local, or an attribute this function
@@ -353,7 +368,7 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
                     and isinstance(next(iter(cls.atoms)), ClassAtom):
                 if next(iter(cls.atoms)) in self.mro(atom.cls):
                     kept.append(atom)
-            elif isinstance_value(atoms([atom]), cls) != const(False):
+            elif isinstance_value(atoms([atom]), cls, self.lib.ancestors) != const(False):
                 kept.append(atom)
         return atoms(kept) if kept else TOP
 
@@ -618,6 +633,12 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if constant is not None:
             return constant
         return atoms([Extern(qualname)])
+
+
+def _decided(answer: Value) -> bool | None:
+    """The boolean a test's value decides, ``None`` when it may be either."""
+    consts = answer.consts()
+    return consts[0] if consts is not None and len(consts) == 1 and isinstance(consts[0], bool) else None
 
 
 def _listed_constants(value: Value) -> list | None:

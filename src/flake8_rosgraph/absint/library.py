@@ -256,6 +256,9 @@ class LibraryModel:
     #: ``None``: unknown. Code dispatching on these names then takes only its true branch.
     class_identity: Callable[[str], tuple[str, str] | None] = field(
         default=lambda qualname: None, repr=False)
+    #: Whether a library class the stubs do not list derives from ``object`` alone (set by the
+    #: caller that knows: generated classes), so no type test of another class holds for it.
+    closed_class: Callable[[str], bool] = field(default=lambda qualname: False, repr=False)
     _canonical: dict[str, str] = field(default_factory=dict, repr=False)
     _mro: dict[str, list[str]] = field(default_factory=dict, repr=False)
     _stand_ins: dict[str, StandIn] | None = field(default=None, repr=False)
@@ -289,6 +292,13 @@ class LibraryModel:
         """Whether a stub models ``qualname`` (a function, class or constant)."""
         name = self.canonical(qualname)
         return name in self.functions or name in self.classes or name in self.constants
+
+    def ancestors(self, qualname: str) -> list[str] | None:
+        """Every class an instance of library class ``qualname`` is an instance of, when the
+        list is complete (its modelled bases, or a closed class); ``None`` otherwise."""
+        if qualname in self.classes or not self.closed_class(qualname):
+            return None
+        return [qualname]
 
     def mro(self, qualname: str) -> list[str]:
         """Library classes from ``qualname`` up its modelled bases (depth-first, no repeats)."""

@@ -17,6 +17,8 @@ Anything else leaves the test undecided (both branches).
 """
 from __future__ import annotations
 
+from typing import Callable
+
 import builtins
 
 from .values import BOOLS, Atom, Coll, Const, DictAtom, Extern, Obj, Seq, Value, const, soften
@@ -30,14 +32,19 @@ _ABSTRACT = ("collections.abc.", "numbers.", "typing.", "abc.", "os.PathLike")
 _CONTAINER_TYPES = {"list": list, "tuple": tuple, "dict": dict, "set": set, "frozenset": frozenset}
 
 
-def isinstance_value(subject: Value, classes: Value) -> Value:
-    """The abstract result of ``isinstance(subject, classes)``."""
+#: The complete list of a library class's ancestors, when it is known (else ``None``).
+Ancestors = Callable[[str], "list[str] | None"]
+
+
+def isinstance_value(subject: Value, classes: Value, ancestors: Ancestors = lambda qualname: None) -> Value:
+    """The abstract result of ``isinstance(subject, classes)``. An instance of a library class
+    whose ``ancestors`` are known is no instance of any other class."""
     targets = _targets(classes)
     if targets is None or subject.is_top or subject.is_bottom:
         return BOOLS
     answers = set()
     for atom in subject:
-        answer = _any_of(atom, targets)
+        answer = _any_of(atom, targets, ancestors)
         if answer is None:
             return BOOLS
         answers.add(answer)
@@ -66,8 +73,8 @@ def _targets(classes: Value) -> list[str] | None:
     return None
 
 
-def _any_of(atom: Atom, targets: list[str]) -> bool | None:
-    answers = [_is_instance(atom, target) for target in targets]
+def _any_of(atom: Atom, targets: list[str], ancestors: Ancestors) -> bool | None:
+    answers = [_is_instance(atom, target, ancestors) for target in targets]
     if any(a is True for a in answers):
         return True
     return False if all(a is False for a in answers) else None
@@ -83,7 +90,7 @@ def _python_type(atom: Atom) -> type | None:
     return None
 
 
-def _is_instance(atom: Atom, target: str) -> bool | None:
+def _is_instance(atom: Atom, target: str, ancestors: Ancestors) -> bool | None:
     builtin = target[len("builtins."):] if target.startswith("builtins.") else None
     exact = _python_type(atom)
     if exact is not None:
@@ -98,4 +105,7 @@ def _is_instance(atom: Atom, target: str) -> bool | None:
         if builtin in _BUILTIN_TYPES and builtin != "object" \
                 and not atom.cls.qualname.startswith("builtins."):
             return False
+        known = ancestors(atom.cls.qualname)
+        if known is not None:
+            return target in known or target == "builtins.object"
     return None
