@@ -1039,8 +1039,8 @@ def _rooted(value: Value) -> list[str] | None:
 
 
 def _namespace_front(value: Value) -> list[str] | None:
-    """Every possible node namespace as the front of a fully qualified name, as rcl joins
-    them: ``None``, ``""`` and ``"/"`` give ``""`` (``/name``), ``"ns"`` gives ``"/ns"``."""
+    """Every possible value as the front of an absolute path a ``/`` and a name follow:
+    ``None``, ``""`` and ``"/"`` give ``""`` (``/name``), ``"ns"`` gives ``"/ns"``."""
     rooted = _rooted(value)
     return sorted({r.rstrip("/") for r in rooted}) if rooted is not None else None
 

@@ -10,8 +10,9 @@ the ``else`` of ``if x == '':``, the way past ``x != c``, ``x is not None``, ``x
 
 Only constants are ruled out, and the objects a type test tells apart (``isinstance(msg, A)``:
 the other branch holds the other message); a value only shrinks: the narrowed value is a
-subset of the original, so where the two ways join again the join is the original value itself (:meth:`.values.Value.join` keeps the larger operand). A setting from
-outside keeps its origin; when every default it had is ruled out it is that setting, unknown.
+subset of the original, so where the two ways join again the join is the original value
+itself (:meth:`.values.Value.join` keeps the larger operand). A setting from outside keeps
+its origin; when every default it had is ruled out it is that setting, unknown.
 """
 from __future__ import annotations
 
@@ -27,13 +28,11 @@ Keep = Callable[[Atom], bool]
 TypeTest = Callable[[ast.expr], "tuple[str, Callable[[Atom], bool | None]] | None"]
 #: Evaluates a (pure) expression where the test was evaluated.
 Evaluate = Callable[[ast.expr], Value]
-#: Constants compared at most, per test: past it nothing is ruled out.
-MAX_RULED_OUT = 16
-
-
 #: The environment entry an expression reads (a local's name, or the key under which the
 #: function remembers an attribute it stored: :mod:`.attrflow`), else ``None``.
 Slot = Callable[[ast.expr], "str | None"]
+#: Constants compared at most, per test: past it nothing is ruled out.
+MAX_RULED_OUT = 16
 
 
 def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate, listed: Callable[[Value], list | None],

@@ -170,7 +170,8 @@ class ExpressionSemantics:
         test = self.eval(node.test)
         decided = self.truth(test)
         if decided is None:
-            return self._in_branch(node.test, node.body, True).join(self._in_branch(node.test, node.orelse, False))
+            return self._in_branch(node.test, node.body, True).join(
+                self._in_branch(node.test, node.orelse, False))
         chosen = self.eval(node.body if decided else node.orelse)
         # Chosen by an overridable default (``None if args.trace is None else path``): what
         # runs by default, itself only a default, so a later ``if`` on it explores both ways.
@@ -300,9 +301,15 @@ class ExpressionSemantics:
     def _is_setattr(self, node: ast.Call) -> bool:
         """``setattr(obj, name, value)`` with the builtin: a store by name, which a loop over
         a written-out table makes once per row (each key with the value the row gives it)."""
-        return isinstance(node.func, ast.Name) and node.func.id == "setattr" and len(node.args) == 3 \
-            and not node.keywords and not any(isinstance(a, ast.Starred) for a in node.args) \
-            and self.load_name("setattr") == atoms([Extern("builtins.setattr")])
+        return self.builtin_call(node, "setattr", 3)
+
+    def builtin_call(self, node: ast.expr, name: str, arity: int) -> bool:
+        """Whether ``node`` calls the builtin ``name`` (not shadowed) with ``arity`` plain
+        positional arguments."""
+        return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == name \
+            and len(node.args) == arity and not node.keywords \
+            and not any(isinstance(a, ast.Starred) for a in node.args) \
+            and self.load_name(name) == atoms([Extern(f"builtins.{name}")])
 
     def _holder(self, name: str) -> dict[str, Value]:
         """Where ``name`` lives here: the innermost comprehension binding it, else the frame."""

@@ -251,16 +251,13 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         """``isinstance(x, C)`` with the builtin, ``x`` an entry :meth:`_slot` names and ``C``
         written without a call: the entry, and per atom whether it passes (``None``: not
         known); else ``None``."""
-        if not (isinstance(test, ast.Call) and isinstance(test.func, ast.Name) and test.func.id == "isinstance"
-                and len(test.args) == 2 and not test.keywords
-                and not any(isinstance(a, ast.Starred) for a in test.args)
-                and self._writes_nothing(test.args[1])):
+        if not (isinstance(test, ast.Call) and len(test.args) == 2 and self._writes_nothing(test.args[1])):
             return None
         name = self._slot(test.args[0])
-        if name is None or self.load_name("isinstance") != atoms([Extern("builtins.isinstance")]):
+        if name is None or not self.builtin_call(test, "isinstance", 2):
             return None
         classes = self.eval(test.args[1])
-        return name, lambda atom: _decided(isinstance_value(atoms([atom]), classes, self.lib.ancestors))
+        return name, lambda atom: self.truth(isinstance_value(atoms([atom]), classes, self.lib.ancestors))
 
     def _slot(self, expr: ast.expr) -> str | None:
         """The environment entry ``expr`` reads: a local, or an attribute this function
@@ -633,12 +630,6 @@ class Interpreter(ExpressionSemantics, ObjectSemantics, CallSemantics, InstanceF
         if constant is not None:
             return constant
         return atoms([Extern(qualname)])
-
-
-def _decided(answer: Value) -> bool | None:
-    """The boolean a test's value decides, ``None`` when it may be either."""
-    consts = answer.consts()
-    return consts[0] if consts is not None and len(consts) == 1 and isinstance(consts[0], bool) else None
 
 
 def _listed_constants(value: Value) -> list | None:

@@ -17,9 +17,8 @@ Anything else leaves the test undecided (both branches).
 """
 from __future__ import annotations
 
-from typing import Callable
-
 import builtins
+from typing import Callable
 
 from .values import BOOLS, Atom, Coll, Const, DictAtom, Extern, Obj, Seq, Value, const, soften
 
