@@ -21,7 +21,7 @@ import dataclasses
 import importlib
 import json
 import math
-from typing import Any
+from typing import Any, Callable
 
 #: The modules whose dataclasses are facts (relative to the package).
 FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
@@ -104,24 +104,39 @@ def from_obj(obj: Any) -> Any:
         return obj
     if kind is list:
         return _items(obj)
-    if kind is not dict or len(obj) not in (1, 2):
+    found = _untagged(obj, _items) if kind is dict else _NOT_A_TAG
+    if found is _NOT_A_TAG:
         raise NotAFact("not an encoded fact")
-    if "c" in obj:
-        return _instance(obj, _items(_list(obj.get("v"))))
-    if "n" in obj:
-        if obj["n"] not in _NON_FINITE:
-            raise NotAFact("not a non-finite number")
-        return float(obj["n"])
+    return found
+
+
+#: What :func:`_untagged` gives for an object that is no tag.
+_NOT_A_TAG = object()
+
+
+def _untagged(obj: dict, items: Callable[[list], list]) -> Any:
+    """What the tagged object ``obj`` stands for, its members made values by ``items``
+    (:func:`_items` on parsed JSON; nothing when the parser decoded them already, see
+    :func:`loads_entry`); :data:`_NOT_A_TAG` for an object that is no tag."""
+    size = len(obj)
+    if size == 2 and "c" in obj and "v" in obj:
+        return _instance(obj, items(_list(obj["v"])))
+    if size != 1:
+        return _NOT_A_TAG
     if "t" in obj:
-        return tuple(_items(_list(obj["t"])))
+        return tuple(items(_list(obj["t"])))
     if "f" in obj:
-        return _hashed(frozenset, _items(_list(obj["f"])))
+        return _hashed(frozenset, items(_list(obj["f"])))
     if "m" in obj:
         pairs = [_list(pair) for pair in _list(obj["m"])]
         if any(len(pair) != 2 for pair in pairs):
             raise NotAFact("not a key-value pair")
-        return _hashed(dict, [(from_obj(k), from_obj(v)) for k, v in pairs])
-    raise NotAFact("not an encoded fact")
+        return _hashed(dict, [items(pair) for pair in pairs])
+    if "n" in obj:
+        if obj["n"] not in _NON_FINITE:
+            raise NotAFact("not a non-finite number")
+        return float(obj["n"])
+    return _NOT_A_TAG
 
 
 def _instance(obj: dict, values: list) -> Any:
@@ -160,30 +175,20 @@ def loads_entry(text: str) -> dict:
     untagged: list[dict] = []
 
     def decoded(obj: dict) -> Any:
-        size = len(obj)
-        if size == 2 and "c" in obj and "v" in obj:
-            return _instance(obj, _list(obj["v"]))
-        if size == 1:
-            if "t" in obj:
-                return tuple(_list(obj["t"]))
-            if "f" in obj:
-                return _hashed(frozenset, _list(obj["f"]))
-            if "m" in obj:
-                pairs = [_list(pair) for pair in _list(obj["m"])]
-                if any(len(pair) != 2 for pair in pairs):
-                    raise NotAFact("not a key-value pair")
-                return _hashed(dict, pairs)
-            if "n" in obj:
-                if obj["n"] not in _NON_FINITE:
-                    raise NotAFact("not a non-finite number")
-                return float(obj["n"])
-        untagged.append(obj)
-        return obj
+        found = _untagged(obj, _as_decoded)
+        if found is _NOT_A_TAG:
+            untagged.append(obj)
+            return obj
+        return found
 
     top = json.loads(text, object_hook=decoded)
     if len(untagged) != 1 or untagged[0] is not top:
         raise NotAFact("not an object of encoded facts")
     return top
+
+
+def _as_decoded(values: list) -> list:
+    return values
 
 
 def _hashed(make: type, items: list) -> Any:
