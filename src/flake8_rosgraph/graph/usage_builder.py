@@ -467,6 +467,7 @@ class UsageBuilder:
         Only calls on every path (outside ``try``) order a body; custom contexts are skipped."""
         memo: dict[tuple, bool] = {}
         entity_memo: dict[tuple, frozenset[str]] = {}
+        made_memo: dict[tuple, frozenset[str]] = {}
         out: dict[Location, OutOfOrder] = {}
         for task in self.calls.tasks():
             sites = self.calls.sites(task)
@@ -488,12 +489,16 @@ class UsageBuilder:
                     out.setdefault(_loc(site), OutOfOrder(
                         _loc(site), "node created", "after rclpy.shutdown()",
                         _loc(sites[earlier[0]])))
-            self._after_destroy(sites, fixed, out, entity_memo)
+            self._after_destroy(sites, fixed, out, entity_memo, made_memo)
         return [out[k] for k in sorted(out)]
 
-    def _after_destroy(self, sites, fixed, out, memo) -> None:
+    def _after_destroy(self, sites, fixed, out, memo, made_memo) -> None:
         destroyed: dict[str, int] = {}
         for i, site in enumerate(sites):
+            # A node made again where the destroyed one was made (the same helper, a loop) is
+            # the same abstract object but a new handle: its entities are in order.
+            for node in self._nodes_made(site, made_memo) & destroyed.keys():
+                del destroyed[node]
             for node in sorted(self._creates_on(site, memo) & destroyed.keys()):
                 label = self.node_labels.get(node, "?")
                 out.setdefault(_loc(site), OutOfOrder(
@@ -504,6 +509,19 @@ class UsageBuilder:
                     nodes = _obj_sites(eff.arg("node")) if eff.kind == "node_destroy" else None
                     if nodes is not None and len(nodes) == 1:
                         destroyed.setdefault(next(iter(nodes)), i)
+
+    def _nodes_made(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
+        """The object sites of the nodes the call may make, on any path through it."""
+        if site.callee[0] == "lib":
+            return frozenset().union(*(
+                _obj_sites(eff.arg("target")) or () for eff in site.effects if eff.kind == "node"))
+        task = site.callee[1]
+        if task not in memo:
+            memo[task] = frozenset()  # recursion: nothing known
+            memo[task] = frozenset().union(*(
+                self._nodes_made(s, memo, depth + 1) for s in self.calls.sites(task))) \
+                if depth < 8 else frozenset()
+        return memo[task]
 
     def _creates_on(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
         """The nodes the call creates an entity on, on every path through it."""
