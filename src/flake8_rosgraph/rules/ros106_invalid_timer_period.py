@@ -52,8 +52,9 @@ class InvalidTimerPeriod(Rule):
     default the environment can override (a ROS parameter, a command-line
     option) is not judged. Every possible value is checked, so a value that is
     invalid on one branch only is reported too — unless the timer is created on
-    some paths only and some of its values are valid: the analysis does not
-    narrow a value by the test that guards the creation (`if period > 0:`).
+    some paths only and some of its values are valid. A test that compares a
+    local with a constant (`if period > 0:`, `if period:`) rules the failing
+    values out of the branch; other guards (`if self.ready():`) do not.
 
     ## Example
     ```python
