@@ -130,6 +130,9 @@ class PeriodArgument:
     what: str                      # "timer period" or "rate frequency"
     values: tuple | None           # every possible value, None when unknown
     conditional: bool              # created on some paths only (a test may exclude values)
+    #: The code cancels or destroys this timer somewhere: with period 0 it runs once (the
+    #: "start when spinning" idiom), not in a busy loop.
+    stopped: bool = False
 
 
 @dataclass(frozen=True)

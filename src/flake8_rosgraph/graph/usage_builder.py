@@ -557,6 +557,8 @@ class UsageBuilder:
     # -- periods -----------------------------------------------------------------------
     def _periods(self) -> list[PeriodArgument]:
         out = []
+        stopped = frozenset().union(*(_obj_sites(eff.arg("timer")) or () for eff in self.effects
+                                      if eff.kind == "timer_stop"))
         for eff in self.effects:
             if eff.kind == "timer":
                 value, what = eff.arg("period"), "timer period"
@@ -565,8 +567,9 @@ class UsageBuilder:
             else:
                 continue
             consts = value.consts() if not value.soft else None
+            timer = _obj_sites(eff.arg("object")) if eff.kind == "timer" else None
             out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None,
-                                      eff.conditional))
+                                      eff.conditional, bool(timer and timer & stopped)))
         return out
 
 
