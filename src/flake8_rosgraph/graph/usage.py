@@ -154,6 +154,9 @@ class UsageFacts:
     redeclarations: list[Redeclaration] = field(default_factory=list)
     periods: list[PeriodArgument] = field(default_factory=list)
     out_of_order: list[OutOfOrder] = field(default_factory=list)
+    #: Parameter names written at declaration calls the analysis did not attribute to a known
+    #: node (:mod:`.declaration_sites`): some node may declare them unseen.
+    unattributed_parameters: frozenset[str] = frozenset()
 
 
 def callback_order(cb: Callback) -> tuple:

@@ -13,6 +13,7 @@ from ..absint.callgraph import CallGraph, CallSite
 from ..absint.engine import Analysis, Effect
 from ..absint.program import Function
 from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value, wrapped
+from .declaration_sites import written_declarations
 from .model import Location
 from .usage import (BlockingCall, Callback, Group, NodeParameters, OutOfOrder, ParameterUse, PeriodArgument,
                     Redeclaration, Signature, Step, UsageFacts, callback_order)
@@ -94,6 +95,7 @@ class UsageBuilder:
         facts.redeclarations = self._redeclarations()
         facts.periods = self._periods()
         facts.out_of_order = self._out_of_order()
+        facts.unattributed_parameters = self._unattributed_parameters()
         return facts
 
     # -- callbacks ---------------------------------------------------------------------
@@ -385,6 +387,14 @@ class UsageBuilder:
         return {site: NodeParameters(site, self.node_labels.get(site, "?"), locations[site],
                                      open_[site], frozenset(declared[site]))
                 for site in sorted(open_)}
+
+    def _unattributed_parameters(self) -> frozenset[str]:
+        """Names written at declaration calls where no declaration on a known node was
+        recorded (a call not reached, or reached with an unknown node)."""
+        attributed = {(eff.path, eff.line) for eff in self.effects
+                      if eff.kind in ("parameter", "parameters") and _obj_sites(eff.arg("node"))}
+        return frozenset(name for path, line, name in written_declarations(
+            self.program.walked(), self.program.read_names) if (path, line) not in attributed)
 
     def _parameter_uses(self) -> list[ParameterUse]:
         handled = self._handled_uses()
