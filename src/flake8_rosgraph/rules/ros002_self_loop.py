@@ -113,11 +113,14 @@ def _shared_buses(graph: RosGraph) -> frozenset[str]:
     and listens for the others') is a bus the nodes share on purpose: each one's subscription
     is there to hear the other publishers. A subscription renamed by mistake to a node's own
     output makes a loop on one node only, or one of another type. Nodes of one name are
-    alternatives or instances of one program, not several members.
+    alternatives or instances of one program, not several members; a test fixture is a system
+    of its own (a harness hearing its own command), no member of the production bus.
     """
     looping: dict[str, set[str | int]] = defaultdict(set)
     types: dict[str, set[str]] = defaultdict(set)
     for node in graph.nodes:
+        if node_scope(node) is not None:
+            continue
         published = {p.name: p for p in node.of_kind("publishers") if p.name is not None and not p.partial}
         for sub in node.of_kind("subscriptions"):
             pub = published.get(sub.name)
