@@ -154,6 +154,43 @@ def test_a_launch_name_given_to_an_executable_of_two_nodes_renames_both():
     assert codes(quiet, select=["ROS007"]) == []
 
 
+def test_the_nodes_of_one_executable_named_by_two_launch_files_are_two_deployments():
+    """Two bring-ups (a lab and a simulation) each start the skill server, an executable of
+    two nodes talking over a lease topic, and each names it: the broker of one bring-up and
+    the executor of the other are not one system."""
+    broker = node("lease_broker", pub("/skill_server/lease_events"), path="skills/skills/broker.py", line=20)
+    executor = node("bt_executor", sub("/skill_server/lease_events"), path="skills/skills/executor.py", line=30)
+    started = []
+    for launch_file in ("bringup/lab.launch.py", "bringup/sim.launch.py"):
+        action = LaunchedNode("skills", "skill_server", Location(launch_file, 12, 5), launch_file,
+                              name="skill_server")
+        for code in (broker, executor):
+            instance = instance_of(code, launch_file, 12)
+            instance.launch.update(package="skills", executable="skill_server")
+            instance.name = "skill_server"
+            started.append((launch_file, Instance(action, code, instance), instance))
+    g = graph(*(instance for _, _, instance in started))
+    g.systems = [System(path, instances=[i for f, i, _ in started if f == path])
+                 for path in ("bringup/lab.launch.py", "bringup/sim.launch.py")]
+    assert [m for m in messages(g, select=["ROS007"]) if "also created" in m] == []
+
+
+def test_a_unit_test_node_named_like_a_launched_node_is_no_duplicate():
+    """A unit test makes a node of the production node's name to drive its logic; the launch
+    file that starts the production node is not part of the test's process. The twin: two
+    nodes of one test module that talk are still one process."""
+    relay = node("delayed_relay", sub("/number"), pub("/delayed_number"), path="relay/relay/node.py")
+    launched_relay = instance_of(relay, "bringup/relay.launch.py", 6)
+    test_relay = node("delayed_relay", pub("/number"), path="relay/test/test_relay.py", line=16)
+    feeder = node("delayed_relay", sub("/number"), path="relay/test/test_relay.py", line=20)
+    g = graph(launched_relay, test_relay)
+    g.systems = [System("bringup/relay.launch.py",
+                        instances=[launched("bringup/relay.launch.py", launched_relay, 6)])]
+    assert codes(g, select=["ROS007"]) == []
+    assert report(graph(test_relay, feeder), select=["ROS007"]) == [
+        "ROS007 relay/test/test_relay.py:16", "ROS007 relay/test/test_relay.py:20"]
+
+
 def test_the_transform_tree_and_the_log_tie_no_two_nodes_together():
     """Every node joins ``/tf_static`` (a TransformListener hears every broadcaster) and
     ``/rosout``: two alternative programs of one node name both using them are not one system

@@ -7,7 +7,7 @@ from typing import Iterator
 from ..graph.model import PEER_KIND, Location, RosGraph, RosNode
 from ..launch.model import LaunchedNode
 from .base import Finding, Rule, RuleConfig
-from .fixtures import node_scope
+from .fixtures import node_scope, test_run
 from .topics import Endpoint, EndpointIndex
 from .vocabulary import NAME_NOUN
 from .written import launched_names, written_graph
@@ -61,7 +61,9 @@ class DuplicateNodeName(Rule):
     under one name by two launch files that do not start each other's
     instance (two bring-ups of one safety monitor, one remapping its output
     onto what the other's input reads) is two deployments: their talk does
-    not make them run together. An end whose name rclpy rejects (ROS006)
+    not make them run together; so are the nodes of one executable that two
+    such launch files start. A node a unit test creates never runs with the
+    nodes a production launch file starts (the test process runs on its own). An end whose name rclpy rejects (ROS006)
     never exists, so it ties no two nodes together; nor does a topic that
     both nodes publish and subscribe (a state channel two alternative programs
     of one role each announce on and listen to: each hears itself there too).
@@ -239,6 +241,7 @@ class _Together:
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node \
                             and not self._configurations_of_one_node(node, peer.node) \
+                            and not _unit_test_beside_launched(node, peer.node) \
                             and not (_on_bus(node, entity.name) and _on_bus(peer.node, entity.name)):
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
@@ -247,8 +250,25 @@ class _Together:
         other's instance configure it (a safety monitor whose output one bring-up remaps onto
         what another bring-up's instance reads): each is a deployment of its own, and one
         launch file starting both is reported above."""
-        return a.location == b.location and a.launch is not None and b.launch is not None \
+        return (a.location == b.location or _one_executable(a, b)) \
+            and a.launch is not None and b.launch is not None \
             and not set(self._systems.get(id(a), ())) & set(self._systems.get(id(b), ()))
+
+
+def _one_executable(a: RosNode, b: RosNode) -> bool:
+    """Whether two launched nodes come from one executable (the nodes one process creates,
+    each given the launch action's name)."""
+    return a.launch is not None and b.launch is not None and a.launch.get("package") is not None \
+        and (a.launch.get("package"), a.launch.get("executable")) == \
+        (b.launch.get("package"), b.launch.get("executable"))
+
+
+def _unit_test_beside_launched(a: RosNode, b: RosNode) -> bool:
+    """A node a unit test creates (no launch file starts it) and a node a production launch
+    file starts: the test process runs on its own, the launch file is not part of it."""
+    def launched(node: RosNode) -> bool:
+        return node.launch is not None and node_scope(node) is None
+    return test_run(a) is not None and launched(b) or test_run(b) is not None and launched(a)
 
 
 def _on_bus(node: RosNode, name: str) -> bool:
