@@ -337,6 +337,7 @@ def _build_graph(root: Path, stub_files: Sequence[Path], interface_dirs: Sequenc
         nodes = sorted(python.nodes + cpp, key=lambda n: (n.fqn or "", n.location, n.language))
         graph = RosGraph(nodes=nodes, usage=python.usage, messages=python.messages)
         graph.systems = _launch_systems(root, graph, python, metadata, diagnostics)
+        graph.policies = metadata.policy_profiles
         _interfaces(interface_dirs, graph, metadata, diagnostics)
     except Exception as exc:  # the contract: a graph with a diagnostic, never a traceback
         where = traceback.extract_tb(exc.__traceback__)[-1]

@@ -24,5 +24,5 @@ RULE_CODES: tuple[RuleCode, ...] = (
     *(RuleCode(f"ROS{n:03d}") for n in range(1, 10)),
     RuleCode("ROS010", default_enabled=False),
     *(RuleCode(f"ROS{n:03d}") for n in range(101, 108)),
-    *(RuleCode(f"ROS{n:03d}") for n in range(201, 206)),
+    *(RuleCode(f"ROS{n:03d}") for n in range(201, 207)),
 )

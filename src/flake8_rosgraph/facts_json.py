@@ -25,7 +25,8 @@ from typing import Any, Callable
 
 #: The modules whose dataclasses are facts (relative to the package).
 FACT_MODULES = ("graph.model", "graph.usage", "graph.messages", "launch.actions", "launch.model",
-                "launch.packages", "python_facts", "metadata", "interfaces.catalogue")
+                "launch.packages", "python_facts", "metadata", "interfaces.catalogue",
+                "security.policy")
 
 
 #: The floats JSON cannot write, as ``repr`` gives them.

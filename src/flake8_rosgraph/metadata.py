@@ -18,6 +18,7 @@ from .interfaces.catalogue import InterfaceFile, interface_files
 from .launch.discover import frontend_launch_files
 from .launch.packages import PackageIndex, find_packages
 from .registrations import registered_classes
+from .security.policy import PolicyProfile, policy_files, read_policies
 from . import workspace
 
 
@@ -33,6 +34,8 @@ class WorkspaceMetadata:
     python_files: list[str] = field(default_factory=list)
     #: The workspace packages' ``msg``/``srv``/``action`` files, in path order.
     interface_files: list[InterfaceFile] = field(default_factory=list)
+    #: The SROS2 policy files' profiles (:mod:`.security.policy`).
+    policy_profiles: list[PolicyProfile] = field(default_factory=list)
     #: What could not be read, each naming the file or package.
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
@@ -63,4 +66,8 @@ def read_metadata(root: Path) -> WorkspaceMetadata:
         meta.interface_files = interface_files(root, root)
     except Exception as exc:
         meta.diagnostics.append(internal_error("interface definitions not read", exc))
+    try:
+        meta.policy_profiles = read_policies(root, policy_files(root, meta.diagnostics), meta.diagnostics)
+    except Exception as exc:
+        meta.diagnostics.append(internal_error("SROS2 policy files not read", exc))
     return meta

@@ -10,7 +10,7 @@ from flake8_rosgraph.rules.base import Finding, Rule
 from flake8_rosgraph.rules.docs import SECTIONS, rule_doc
 
 EXPECTED_CODES = ([f"ROS{n:03d}" for n in range(1, 11)] + [f"ROS{n:03d}" for n in range(101, 108)]
-                  + [f"ROS{n:03d}" for n in range(201, 206)])
+                  + [f"ROS{n:03d}" for n in range(201, 207)])
 
 
 def test_rules_in_code_order_one_per_code():

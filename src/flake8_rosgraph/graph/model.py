@@ -169,6 +169,9 @@ class RosGraph:
     #: How the code uses rclpy beyond the graph (``flake8_rosgraph.graph.usage.UsageFacts``:
     #: callbacks, blocking calls, executors, parameter uses); ``None`` when not extracted.
     usage: Any = None
+    #: The SROS2 access-control profiles of the workspace's policy files
+    #: (``flake8_rosgraph.security.policy.PolicyProfile``).
+    policies: list[Any] = field(default_factory=list)
 
     def entities(self, kind: str | None = None):
         """Yield ``(node, entity)`` pairs, optionally of one kind."""

@@ -104,7 +104,7 @@ def judged_graph(graph: RosGraph, systems: list[System]) -> RosGraph:
     judged.diagnostics = list(graph.diagnostics)
     judged.systems = systems
     judged.messages, judged.interfaces = graph.messages, graph.interfaces
-    judged.usage = graph.usage
+    judged.usage, judged.policies = graph.usage, graph.policies
     return judged
 
 

@@ -28,6 +28,8 @@ class Element:
     line: int
     column: int
     children: list["Element"] = field(default_factory=list)
+    #: The character data directly inside it (``<topic>chatter</topic>``).
+    text: str = ""
 
 
 #: Deepest element nesting read (real launch files nest a handful of groups).
@@ -75,8 +77,13 @@ def parse_xml(text: str) -> Element:
     def end(tag: str) -> None:
         stack.pop()
 
+    def data(text: str) -> None:
+        if stack:
+            stack[-1].text += text
+
     parser.StartElementHandler = start
     parser.EndElementHandler = end
+    parser.CharacterDataHandler = data
     parser.Parse(text, True)
     return roots[0]
 

@@ -1,4 +1,4 @@
-"""The graph rules ROS001–ROS010, the rclpy-misuse rules ROS101–ROS107 and the launch rules ROS201–ROS205: one module per rule, run together over one extracted graph.
+"""The graph rules ROS001–ROS010, the rclpy-misuse rules ROS101–ROS107 and the launch and configuration rules ROS201–ROS206: one module per rule, run together over one extracted graph.
 
 ``RULES`` is the registry every front end (flake8 plugin, ``check`` command,
 SARIF writer, the generated ``docs/rules.md``) reads, in code order.
@@ -32,6 +32,7 @@ from .ros202_ineffective_remap import IneffectiveRemap
 from .ros203_invalid_launch_name import InvalidLaunchName
 from .ros204_unknown_parameter import UnknownParameter
 from .ros205_unmatched_parameter_section import UnmatchedParameterSection
+from .ros206_security_policy import SecurityPolicy
 from .shared import shared_indexes
 
 RULES: tuple[Rule, ...] = (
@@ -57,6 +58,7 @@ RULES: tuple[Rule, ...] = (
     InvalidLaunchName(),
     UnknownParameter(),
     UnmatchedParameterSection(),
+    SecurityPolicy(),
 )
 
 _BY_CODE: dict[str, Rule] = {rule.code: rule for rule in RULES}

@@ -1,0 +1,1 @@
+"""The security front end: SROS2 access-control policies (:mod:`.policy`)."""
