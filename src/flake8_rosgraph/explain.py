@@ -306,7 +306,7 @@ class _Explainer:
                 out.append("unknown name" + _partly_known(e for _, e in found))
             if any(e.kind in NAMED_KINDS and e.type is None for _, e in found):  # typed kinds only
                 out.append("unknown type")
-            if any(n.unresolved_base for n, _ in found):
+            if any(n.unresolved_base or n.passed_in for n, _ in found):
                 out.append("unknown node")
         return out
 
@@ -446,11 +446,20 @@ class _Explainer:
         return None if fid is None else self.program.functions[fid]
 
     def _presumed_reasons(self, key: tuple) -> list[str]:
-        """Why the node of an entity is unknown: its class's base class is not resolved."""
-        return [f"class {node.cls} is presumed to be a node: its base class {node.unresolved_base} "
-                "is not resolved (imported from a library no stub models), so its name and "
-                "namespace are unknown; a stub for the base class gives them"
-                for node, _ in self.graph_entities.get(key, []) if node.unresolved_base]
+        """Why the node of an entity is unknown: its class's base class is not resolved, or it
+        is the node a function is handed by callers the analysis does not see."""
+        out = []
+        for node, _ in self.graph_entities.get(key, []):
+            if node.unresolved_base:
+                out.append(f"class {node.cls} is presumed to be a node: its base class "
+                           f"{node.unresolved_base} is not resolved (imported from a library no "
+                           "stub models), so its name and namespace are unknown; a stub for the "
+                           "base class gives them")
+            elif node.passed_in:
+                out.append(f"its node is the {node.passed_in}, annotated as a node, which no "
+                           "analysed code calls with a node: its name and namespace are the "
+                           "caller's, unknown here")
+        return out
 
     def _owner_reasons(self, key: tuple) -> list[str]:
         """Why a name written in full came out unknown: the node it is relative to."""
