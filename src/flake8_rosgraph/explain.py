@@ -18,6 +18,7 @@ unrelated class with a method of the same name is listed as "not reached".
 from __future__ import annotations
 
 import ast
+import re
 from dataclasses import dataclass
 from typing import Iterable, Sequence
 
@@ -493,6 +494,13 @@ class _Explainer:
                 ref = dict(spec.args).get(arg)
                 if spec.kind == eff.kind and ref is not None and ref.how in ("arg", "overridable"):
                     return ref.data, _argument(call, model.signature, ref.data)
+                if spec.kind == eff.kind and ref is not None and ref.how == "format":
+                    # A name the library builds from parameters (``{node_name}/set_parameters``):
+                    # the first of them the call passes is where an unknown part comes from.
+                    for param in re.findall(r"\{(\w+)", ref.data):
+                        argument = _argument(call, model.signature, param)
+                        if argument is not None:
+                            return param, argument
         return None, None
 
     def _star_binding(self, name: str, module: Module) -> str | None:
@@ -509,6 +517,22 @@ class _Explainer:
         return (f"`{name}` can only come from `from … import *` of {', '.join(f'`{s}`' for s in sources)}, "
                 "outside the workspace: the names it binds are not known")
 
+    def _library_import(self, name: str, module: Module) -> str | None:
+        """A name the module imports from outside the workspace (``from tf2_geometry_msgs
+        import PointStamped``) that no stub models and that is not an interface module's."""
+        for stmt in module.tree.body:
+            if not isinstance(stmt, ast.ImportFrom) or stmt.level or not stmt.module:
+                continue
+            for alias in stmt.names:
+                qual = f"{stmt.module}.{alias.name}"
+                if (alias.asname or alias.name) != name \
+                        or self.program.resolve_import(module, stmt.module, 0) in self.program.modules \
+                        or self.library.knows(qual) or stmt.module.split(".")[-1] in ("msg", "srv", "action"):
+                    continue
+                return (f"`{name}` is imported from `{stmt.module}`, outside the workspace, which no "
+                        "stub models: what it is is not known")
+        return None
+
     def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
                         module: Module) -> list[str]:
         """Where the value of ``expr`` comes from, in words (what made it unknown)."""
@@ -518,7 +542,7 @@ class _Explainer:
         for name in sorted({n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}
                            - {"self", "cls"}):
             binding = _binding_of(name, scope, call) or _module_binding(name, module) \
-                or self._star_binding(name, module)
+                or self._star_binding(name, module) or self._library_import(name, module)
             if binding:
                 out.append(binding)
         calls = [sub for sub in ast.walk(expr) if isinstance(sub, ast.Call)]
