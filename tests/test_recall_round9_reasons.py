@@ -88,3 +88,41 @@ def test_a_message_reexported_by_tf2_geometry_msgs_is_typed(tmp_path: Path) -> N
     assert status == "unknown"
     assert any("`BallHint` is imported from `vision_extras`, outside the workspace, which no stub "
                "models" in r for r in why)
+
+
+LOADER = """
+    import importlib
+
+
+    def get_message_class(name):
+        package, _, message = name.partition('/')
+        return getattr(importlib.import_module(package + '.msg'), message)
+"""
+
+ECHO = """
+    import rclpy
+    from rclpy.node import Node
+
+    from bridge_tools.loader import get_message_class
+
+
+    class Echo(Node):
+        def __init__(self):
+            super().__init__('echo')
+            msg_type = 'std_msgs/String'
+            self.sub = self.create_subscription(get_message_class(msg_type), '/echo', print, 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Echo())
+"""
+
+
+def test_a_literal_binding_is_not_given_as_the_cause_of_an_unknown(tmp_path: Path) -> None:
+    root = write(tmp_path, package("bridge_tools", "'echo = bridge_tools.echo:main'",
+                                   {"loader": LOADER, "echo": ECHO}))
+    status, why = reasons(root)[("bridge_tools/bridge_tools/echo.py", 11)]
+    assert status == "unknown"
+    assert any("it is built from `get_message_class(msg_type)`" in r for r in why)
+    assert not any("msg_type = " in r for r in why)

@@ -813,7 +813,8 @@ def _binding_of(name: str, scope: ast.AST | None, call: ast.Call) -> str | None:
             return (f"it depends on loop variable `{name}` over `{_short(node.iter)}`, "
                     "whose elements are unknown")
         if isinstance(node, ast.Assign) and node.lineno <= call.lineno and any(
-                isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt)):
+                isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt)) \
+                and not isinstance(node.value, ast.Constant):  # a literal is known: not the cause
             return f"it depends on `{name} = {_short(node.value)}`, whose value is unknown"
         if isinstance(node, ast.withitem) and node.optional_vars is not None and any(
                 isinstance(t, ast.Name) and t.id == name for t in ast.walk(node.optional_vars)):
