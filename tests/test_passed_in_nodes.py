@@ -105,7 +105,7 @@ ESCAPED = """
 
 
     def main(registry):
-        Reporter(registry).refresh()
+        return Reporter(registry)  # the caller refreshes it
 """
 
 
@@ -158,6 +158,10 @@ def test_a_helper_called_with_an_unknown_node_gets_no_node_of_its_own(tmp_path: 
     # fetch_remote runs on the reporter's unknown node: it is not one of the caller's own.
     assert (None, "parameter `own_node` of fetch_remote") not in nodes
     assert (None, "parameter `node` of announce_ready") in nodes
+    status, why = reasons(root)[("fleet_tools/fleet_tools/helpers.py", 10)]
+    assert status == "missing"
+    assert any("it is created on parameter `own_node` of fetch_remote, a node, which analysed code "
+               "passes without the analysis knowing which node it is" in r for r in why)
 
 
 RUNNER = """

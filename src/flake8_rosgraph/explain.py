@@ -24,9 +24,10 @@ from typing import Iterable, Sequence
 
 from .absint.engine import Analysis, Effect
 from .absint.fixtures import Fixtures
-from .absint.values import BOTTOM
+from .absint.values import BOTTOM, Obj
 from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
+from .absint.passed_in import passed_in_parameter
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS, unpaired_types
 from .graph.model import NAMED_KINDS, Entity, RosGraph
@@ -249,7 +250,8 @@ class _Explainer:
         unknowns = self._unknowns(key, effects)
         if unknowns is None:
             return Explanation(site, "missing", (
-                "the object it is created on is not known to be a node here",
+                *(self._passed_in_reasons(effects)
+                  or ["the object it is created on is not known to be a node here"]),
                 *self._origin_reasons(call, scope, _node_argument(call), module),))
         func = self._function_of(scope)
         if not unknowns:
@@ -445,6 +447,19 @@ class _Explainer:
             return None
         fid = self.program.fid_of.get(id(scope))
         return None if fid is None else self.program.functions[fid]
+
+    def _passed_in_reasons(self, effects: list[Effect]) -> list[str]:
+        """Why the node a parameter annotated as a node stands for is not in the graph: analysed
+        code calls the function too, with a node it does not know (see :mod:`.absint.passed_in`)."""
+        out = []
+        for eff in effects:
+            for obj in eff.arg("node"):
+                found = passed_in_parameter(obj.site) if isinstance(obj, Obj) else None
+                if found is not None:
+                    out.append(f"it is created on parameter `{found[1]}` of "
+                               f"{self.program.functions[found[0]].qualname}, a node, which analysed "
+                               "code passes without the analysis knowing which node it is")
+        return list(dict.fromkeys(out))
 
     def _presumed_reasons(self, key: tuple) -> list[str]:
         """Why the node of an entity is unknown: its class's base class is not resolved, or it
