@@ -41,7 +41,7 @@ HELPERS = """
         pub.publish(String(data=text))
 
 
-    def watch_battery(node: Node, on_state):
+    def watch_battery(node: 'Node', on_state):
         return node.create_subscription(BatteryState, 'battery_state', on_state, 1)
 
 

@@ -36,11 +36,17 @@ def passed_in_parameter(site: str) -> tuple[int, str] | None:
 
 def annotation(func: Function, name: str) -> ast.expr | None:
     """The annotation of ``func``'s named (not ``*args``/``**kwargs``) parameter ``name``
-    when it is a dotted name (``Node``, ``rclpy.node.Node``), the only form read."""
+    when it is a dotted name (``Node``, ``rclpy.node.Node``, also written as a string: a
+    forward reference), the only form read."""
     a = func.node.args
     for param in a.posonlyargs + a.args + a.kwonlyargs:
         if param.arg == name:
             found = param.annotation
+            if isinstance(found, ast.Constant) and isinstance(found.value, str):
+                try:
+                    found = ast.parse(found.value.strip(), mode="eval").body
+                except (SyntaxError, ValueError, RecursionError):
+                    return None
             expr = found
             while isinstance(expr, ast.Attribute):
                 expr = expr.value
