@@ -47,6 +47,11 @@ HELPERS = """
 
     def untyped_status(node, on_state):
         return node.create_subscription(String, '/fleet/status', on_state, 1)
+
+
+    def relay(source: Node, sink: Node):
+        out = sink.create_publisher(String, '/fleet/relayed', 10)
+        return source.create_subscription(String, '/fleet/raw', out.publish, 10)
 """
 
 CONFIG = """
@@ -127,6 +132,9 @@ def test_a_node_parameter_no_analysed_code_fills_is_a_node_of_unknown_name(tmp_p
         (None, "parameter `node` of announce_ready"): [("publishers", "/fleet/ready")],
         # Relative to the caller's namespace: the entity is there, its name is not known.
         (None, "parameter `node` of watch_battery"): [("subscriptions", "?")],
+        # Two nodes handed to one function are two nodes, each with what is created on it.
+        (None, "parameter `sink` of relay"): [("publishers", "/fleet/relayed")],
+        (None, "parameter `source` of relay"): [("subscriptions", "/fleet/raw")],
     }
     found = reasons(root)
     status, why = found[("fleet_tools/fleet_tools/helpers.py", 10)]
@@ -145,11 +153,13 @@ def test_a_node_parameter_no_analysed_code_fills_is_a_node_of_unknown_name(tmp_p
 def test_helpers_a_workspace_node_calls_stay_on_that_node_only(tmp_path: Path) -> None:
     root = _workspace(tmp_path, {"manager": MANAGER},
                       "'fleet_manager = fleet_tools.manager:main'")
-    assert _nodes(root) == {
-        ("/fleet_manager", None): [("clients", "/fleet/planner/get_parameters"),
-                                   ("publishers", "/fleet/ready"),
-                                   ("subscriptions", "/battery_state")],
-    }
+    nodes = _nodes(root)
+    assert nodes.pop(("/fleet_manager", None)) == [("clients", "/fleet/planner/get_parameters"),
+                                                   ("publishers", "/fleet/ready"),
+                                                   ("subscriptions", "/battery_state")]
+    # Only the helper nobody calls keeps nodes of its own.
+    assert sorted(passed for _, passed in nodes) == ["parameter `sink` of relay",
+                                                     "parameter `source` of relay"]
 
 
 def test_a_helper_called_with_an_unknown_node_gets_no_node_of_its_own(tmp_path: Path) -> None:

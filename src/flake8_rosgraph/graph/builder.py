@@ -223,6 +223,7 @@ class GraphBuilder:
         self._unseen: dict[int, tuple[str, ...]] = {}  # class id -> its names handed to unseen code
         self._by_short_name: dict[str, list[int]] | None = None
         self._workspace_tops = frozenset(name.split(".", 1)[0] for name in self.program.modules)
+        self._code_called: dict[str, bool] = {}  # passed-in site -> its function runs on callers' nodes too
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
@@ -373,15 +374,18 @@ class GraphBuilder:
                 continue
             func = self.program.functions[found[0]]
             location = Location(func.module.path, func.node.lineno, func.module.column(func.node))
-            self.by_object[obj.site] = [self.nodes.setdefault((location, None, None), RosNode(
+            # Keyed by the parameter: two nodes handed to one function are two nodes.
+            self.by_object[obj.site] = [self.nodes.setdefault((location, None, obj.site), RosNode(
                 None, None, location, passed_in=f"parameter `{found[1]}` of {func.qualname}"))]
 
     def _called_by_code(self, fid: int, site: str) -> bool:
         """Whether function ``fid`` also ran on arguments analysed code gave: a run whose
-        arguments do not hold the passed-in object of ``site``."""
-        return any(task[0] == "fn" and task[1] == fid and not any(
-            isinstance(a, Obj) and a.site == site for v in task[2] if not v.is_top for a in v)
-            for task in self.analysis.effects)
+        arguments do not hold the passed-in object of ``site`` (asked once per site)."""
+        if site not in self._code_called:
+            self._code_called[site] = any(task[0] == "fn" and task[1] == fid and not any(
+                isinstance(a, Obj) and a.site == site for v in task[2] if not v.is_top for a in v)
+                for task in self.analysis.effects)
+        return self._code_called[site]
 
     def _owners(self, eff: Effect) -> list[RosNode]:
         if eff.kind == "node":
