@@ -229,6 +229,53 @@ def test_a_table_loop_creates_only_the_rows_a_branch_lets_through(tmp_path: Path
         ("subscriptions", "/imu", "sensor_msgs/msg/Imu")]
 
 
+def test_a_table_loop_skips_the_rows_an_ordering_rules_out(tmp_path: Path) -> None:
+    """A rate table where 0 Hz means "off": ``if hz <= 0: continue`` (or ``0 < hz`` read from
+    the other side) creates only the running streams' publishers and timers. The twin:
+    ``hz >= 0`` lets the 0 Hz row through, and its timer period is reported (ROS106)."""
+    rates = """
+        import rclpy
+        from rclpy.node import Node
+        from sensor_msgs.msg import Imu, NavSatFix
+        from std_msgs.msg import String
+
+        RATES = [('/imu', Imu, 100.0), ('/gps', NavSatFix, 0.0), ('/status', String, 1)]
+
+
+        class Streams(Node):
+            def __init__(self):
+                super().__init__('streams')
+                for name, kind, hz in RATES:
+                    if hz <= 0:
+                        continue
+                    self.create_publisher(kind, name, 10)
+                for name, kind, hz in RATES:
+                    if 0 < hz:
+                        self.create_timer(1.0 / hz, self.tick)
+                        self.create_publisher(kind, name + '/rate', 10)
+
+            def tick(self):
+                pass
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Streams())
+    """
+    root = _workspace(tmp_path, rates)
+    streams = next(n for n in build_graph(root).nodes if n.fqn == "/streams")
+    assert sorted((e.kind, e.name) for e in streams.entities if e.kind == "publishers") == [
+        ("publishers", "/imu"), ("publishers", "/imu/rate"),
+        ("publishers", "/status"), ("publishers", "/status/rate")]
+    report = build_report(root, Settings())
+    assert not [f for f in report.findings if f.code == "ROS106"]
+
+    root = _workspace(tmp_path / "twin", rates.replace("if 0 < hz:", "if hz >= 0:")
+                      .replace("self.create_timer(1.0 / hz, self.tick)", "self.create_timer(hz, self.tick)"))
+    report = build_report(root, Settings())
+    assert [(f.code, f.location.line) for f in report.findings if f.code == "ROS106"] == [("ROS106", 18)]
+
+
 RESULTS = """
     import rclpy
     from rclpy.node import Node

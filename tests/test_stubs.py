@@ -41,7 +41,7 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "client": frozenset({"node", "name", "type", "via", "object", "group"}),
     "action_server": frozenset({"node", "name", "type", "callback", "via"}),
     "action_client": frozenset({"node", "name", "type", "via", "object", "group"}),
-    "timer": frozenset({"node", "period", "callback"}),
+    "timer": frozenset({"node", "period", "callback", "object"}),
     "parameter": frozenset({"node", "name", "default"}),
     "parameters": frozenset({"node", "namespace", "parameters"}),
     "parameter_use": frozenset({"node", "name", "names", "parameters", "how"}),
@@ -57,6 +57,7 @@ EFFECT_ARGS: dict[str, frozenset[str]] = {
     "context_init": frozenset({"context", "args"}),
     "context_shutdown": frozenset({"context"}),
     "node_destroy": frozenset({"node"}),
+    "timer_stop": frozenset({"timer"}),
     # launch files: read back by flake8_rosgraph.launch, not by the graph builder
     "launch_node": frozenset({"package", "executable"}),
     "launch_description": frozenset({"description"}),
@@ -80,6 +81,7 @@ EFFECT_REQUIRED: dict[str, frozenset[str]] = {
     "context_init": frozenset(),
     "context_shutdown": frozenset(),
     "node_destroy": frozenset({"node"}),
+    "timer_stop": frozenset({"timer"}),
     "launch_node": frozenset(),
     "launch_description": frozenset(),
 }

@@ -76,6 +76,7 @@ def merged(parts: Sequence[PythonFacts]) -> PythonFacts:
                      "out_of_order"):
             getattr(out.usage, name).extend(getattr(part.usage, name))
         out.usage.nodes.update(part.usage.nodes)
+        out.usage.unattributed_parameters |= part.usage.unattributed_parameters
         for name in ("stores", "reads", "constructions", "publications", "service_returns"):
             getattr(out.messages, name).extend(getattr(part.messages, name))
         out.diagnostics += part.diagnostics

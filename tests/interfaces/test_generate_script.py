@@ -64,4 +64,28 @@ def test_shipped_data_records_real_sources():
     assert {s["repository"] for s in shipped["sources"]} >= {
         "github:ros2/common_interfaces", "github:ros2/rcl_interfaces", "github:ros2/example_interfaces",
         "github:ros2/geometry2", "github:ros2/unique_identifier_msgs", "github:ros2/demos"}
-    assert all(len(s["commit"]) == 40 for s in shipped["sources"])
+    assert all(len(commit) == 40 for s in shipped["sources"]
+               for commit in ([s["commit"]] if "commit" in s else s["commits"].values()))
+    assert "github:ros-navigation/navigation2" in {s["repository"] for s in shipped["sources"]}
+
+
+def _branch(root: Path, ref: str, reading: str) -> None:
+    base = root / f"fake_nav@{ref}" / "gamma_msgs"
+    (base / "msg").mkdir(parents=True)
+    (base / "package.xml").write_text("<package><name>gamma_msgs</name></package>")
+    (base / "msg" / "Goal.msg").write_text("float64 x\n")
+    (base / "msg" / "Status.msg").write_text(reading)
+    (root / f"fake_nav@{ref}.commit").write_text(f"{ref}-commit\n")
+
+
+def test_a_message_that_reads_differently_on_two_branches_is_left_out(script, tmp_path):
+    """Read from each distribution's branch: a message whose fields changed between them would
+    be wrong for one of them, so it is left out; the others are kept."""
+    _branch(tmp_path, "humble", "uint8 state\n")
+    _branch(tmp_path, "jazzy", "uint8 state\nstring detail\n")
+    document = script.generate(tmp_path, {"example/fake_nav": ("gamma_msgs",)})
+    assert document["sources"] == [{"repository": "github:example/fake_nav",
+                                    "commits": {"humble": "humble-commit", "jazzy": "jazzy-commit"},
+                                    "packages": ["gamma_msgs"]}]
+    assert document["messages"] == {"gamma_msgs/msg/Goal": ["float64 x"]}
+    assert document["differs"] == ["gamma_msgs/msg/Status"]

@@ -50,9 +50,18 @@ def test_exempt_and_external_names_are_not_loops():
     assert report(g, select=["ROS002"], external=["echo"]) == []
 
 
-def test_loop_in_each_of_two_nodes():
-    g = graph(node("a", pub("/x"), sub("/x")), node("b", pub("/x"), sub("/x")))
+def test_loop_in_each_of_two_nodes_on_other_topics():
+    g = graph(node("a", pub("/x"), sub("/x")), node("b", pub("/y"), sub("/y")))
     assert report(g) == ["ROS002 a.py:3", "ROS002 b.py:3"]
+
+
+def test_a_topic_two_nodes_each_publish_and_subscribe_is_a_shared_bus():
+    # A state channel: each node announces on it and listens to the others.
+    g = graph(node("a", pub("/state"), sub("/state")), node("b", pub("/state"), sub("/state")))
+    assert report(g, select=["ROS002"]) == []
+    # Two nodes of one name are one program's alternatives or instances: each hears only itself.
+    g = graph(node("a", pub("/state"), sub("/state")), node("a", pub("/state"), sub("/state"), path="a2.py"))
+    assert report(g, select=["ROS002"]) == ["ROS002 a.py:3", "ROS002 a2.py:3"]
 
 
 def test_ends_added_by_two_executables_to_one_node_class_are_no_loop():

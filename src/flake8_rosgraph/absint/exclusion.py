@@ -6,7 +6,8 @@ takes the branch only for ``'left'`` and ``'right'``, so the name is never ``'//
 this, the analysis evaluates the branch with every constant the local may hold and invents
 names the code never makes (a confident wrong name is worse than an unknown one). Likewise
 the ``else`` of ``if x == '':``, the way past ``x != c``, ``x is not None``, ``x not in (…)``,
-``not x``, and each operand of ``a and b`` (both hold) or ``a or b`` (both fail).
+``not x``, an ordering with a number (``if hz > 0:``, also written ``0 < hz``), and each
+operand of ``a and b`` (both hold) or ``a or b`` (both fail).
 
 Only constants are ruled out, and the objects a type test tells apart (``isinstance(msg, A)``:
 the other branch holds the other message); a value only shrinks: the narrowed value is a
@@ -17,6 +18,7 @@ its origin; when every default it had is ruled out it is that setting, unknown.
 from __future__ import annotations
 
 import ast
+import operator
 from typing import Callable
 
 from .values import Atom, Const, Value
@@ -33,6 +35,12 @@ Evaluate = Callable[[ast.expr], Value]
 Slot = Callable[[ast.expr], "str | None"]
 #: Constants compared at most, per test: past it nothing is ruled out.
 MAX_RULED_OUT = 16
+#: The orderings a test may compare a number with (``if period > 0:``).
+ORDERINGS: dict[type, Callable[[object, object], bool]] = {
+    ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt, ast.GtE: operator.ge}
+#: The same comparison read from the other side (``0 < period`` is ``period > 0``).
+MIRRORED: dict[type, type] = {ast.Lt: ast.Gt, ast.LtE: ast.GtE, ast.Gt: ast.Lt, ast.GtE: ast.LtE,
+                              ast.Eq: ast.Eq, ast.NotEq: ast.NotEq}
 
 
 def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate, listed: Callable[[Value], list | None],
@@ -55,9 +63,13 @@ def ruled_out(test: ast.expr, holds: bool, evaluate: Evaluate, listed: Callable[
         return [found for operand in test.values
                 for found in ruled_out(operand, holds, evaluate, listed, slot, type_test)]
     if isinstance(test, ast.Compare) and len(test.ops) == 1:
+        op, right = type(test.ops[0]), test.comparators[0]
         compared = slot(test.left)
         if compared is not None:
-            return _compared(compared, type(test.ops[0]), test.comparators[0], holds, evaluate, listed)
+            return _compared(compared, op, right, holds, evaluate, listed)
+        compared = slot(right)
+        if compared is not None and op in MIRRORED:
+            return _compared(compared, MIRRORED[op], test.left, holds, evaluate, listed)
     return []
 
 
@@ -68,6 +80,8 @@ def _constants(keep: Callable[[object], bool]) -> Keep:
 
 def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evaluate,
               listed: Callable[[Value], list | None]) -> list[tuple[str, Keep]]:
+    if op in ORDERINGS:
+        return _ordered(name, ORDERINGS[op], evaluate(right), holds)
     differs = (op in (ast.Eq, ast.Is, ast.In)) != holds  # the local is *not* what it is compared with
     if not differs or op not in (ast.Eq, ast.NotEq, ast.Is, ast.IsNot, ast.In, ast.NotIn):
         return []
@@ -87,6 +101,21 @@ def _compared(name: str, op: type, right: ast.expr, holds: bool, evaluate: Evalu
     if not excluded or len(excluded) > MAX_RULED_OUT:
         return []
     return [(name, _constants(lambda value: not any(_equal(value, c) for c in excluded)))]
+
+
+def _ordered(name: str, compare: Callable[[object, object], bool], other: Value,
+             holds: bool) -> list[tuple[str, Keep]]:
+    """``x < c`` and the like, with ``c`` one number the run cannot replace: the numbers on the
+    wrong side of it are ruled out (``if period > 0:`` never creates a timer of period 0)."""
+    consts = other.consts() if not other.soft and other.origin is None else None
+    if consts is None or len(consts) != 1 or not _number(consts[0]):
+        return []
+    bound = consts[0]
+    return [(name, _constants(lambda value: not _number(value) or compare(value, bound) == holds))]
+
+
+def _number(value: object) -> bool:
+    return type(value) in (int, float)
 
 
 def _equal(value: object, other: object) -> bool:

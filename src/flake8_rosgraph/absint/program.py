@@ -330,6 +330,10 @@ class Program:
         self._library_star_memo: dict[str, tuple[str, ...]] = {}
         self._imported: dict[str, frozenset[str]] = {}  # see ``_imported_modules``
 
+    def walked(self) -> list[Module]:
+        """The modules walked so far (:meth:`ensure`), in name order: the ones the analysis used."""
+        return [self.modules[name] for name in sorted(self._collected) if name in self.modules]
+
     def ensure(self, name: str) -> Module | None:
         """The module, its functions and classes numbered and its scopes gathered (done on
         first use: modules the analysis never needs are never walked). ``None`` if the

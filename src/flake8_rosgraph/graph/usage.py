@@ -130,6 +130,9 @@ class PeriodArgument:
     what: str                      # "timer period" or "rate frequency"
     values: tuple | None           # every possible value, None when unknown
     conditional: bool              # created on some paths only (a test may exclude values)
+    #: The code cancels or destroys this timer somewhere: with period 0 it runs once (the
+    #: "start when spinning" idiom), not in a busy loop.
+    stopped: bool = False
 
 
 @dataclass(frozen=True)
@@ -151,6 +154,9 @@ class UsageFacts:
     redeclarations: list[Redeclaration] = field(default_factory=list)
     periods: list[PeriodArgument] = field(default_factory=list)
     out_of_order: list[OutOfOrder] = field(default_factory=list)
+    #: Parameter names written at declaration calls the analysis did not attribute to a known
+    #: node (:mod:`.declaration_sites`): some node may declare them unseen.
+    unattributed_parameters: frozenset[str] = frozenset()
 
 
 def callback_order(cb: Callback) -> tuple:

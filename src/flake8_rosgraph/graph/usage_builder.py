@@ -13,6 +13,7 @@ from ..absint.callgraph import CallGraph, CallSite
 from ..absint.engine import Analysis, Effect
 from ..absint.program import Function
 from ..absint.values import BoundMethod, Const, Extern, FuncAtom, Obj, Record, Seq, Value, wrapped
+from .declaration_sites import written_declarations
 from .model import Location
 from .usage import (BlockingCall, Callback, Group, NodeParameters, OutOfOrder, ParameterUse, PeriodArgument,
                     Redeclaration, Signature, Step, UsageFacts, callback_order)
@@ -94,6 +95,7 @@ class UsageBuilder:
         facts.redeclarations = self._redeclarations()
         facts.periods = self._periods()
         facts.out_of_order = self._out_of_order()
+        facts.unattributed_parameters = self._unattributed_parameters()
         return facts
 
     # -- callbacks ---------------------------------------------------------------------
@@ -386,6 +388,14 @@ class UsageBuilder:
                                      open_[site], frozenset(declared[site]))
                 for site in sorted(open_)}
 
+    def _unattributed_parameters(self) -> frozenset[str]:
+        """Names written at declaration calls where no declaration on a known node was
+        recorded (a call not reached, or reached with an unknown node)."""
+        attributed = {(eff.path, eff.line) for eff in self.effects
+                      if eff.kind in ("parameter", "parameters") and _obj_sites(eff.arg("node"))}
+        return frozenset(name for path, line, name in written_declarations(
+            self.program.walked(), self.program.read_names) if (path, line) not in attributed)
+
     def _parameter_uses(self) -> list[ParameterUse]:
         handled = self._handled_uses()
         out = []
@@ -467,6 +477,7 @@ class UsageBuilder:
         Only calls on every path (outside ``try``) order a body; custom contexts are skipped."""
         memo: dict[tuple, bool] = {}
         entity_memo: dict[tuple, frozenset[str]] = {}
+        made_memo: dict[tuple, frozenset[str]] = {}
         out: dict[Location, OutOfOrder] = {}
         for task in self.calls.tasks():
             sites = self.calls.sites(task)
@@ -488,12 +499,16 @@ class UsageBuilder:
                     out.setdefault(_loc(site), OutOfOrder(
                         _loc(site), "node created", "after rclpy.shutdown()",
                         _loc(sites[earlier[0]])))
-            self._after_destroy(sites, fixed, out, entity_memo)
+            self._after_destroy(sites, fixed, out, entity_memo, made_memo)
         return [out[k] for k in sorted(out)]
 
-    def _after_destroy(self, sites, fixed, out, memo) -> None:
+    def _after_destroy(self, sites, fixed, out, memo, made_memo) -> None:
         destroyed: dict[str, int] = {}
         for i, site in enumerate(sites):
+            # A node made again where the destroyed one was made (the same helper, a loop) is
+            # the same abstract object but a new handle: its entities are in order.
+            for node in self._nodes_made(site, made_memo) & destroyed.keys():
+                del destroyed[node]
             for node in sorted(self._creates_on(site, memo) & destroyed.keys()):
                 label = self.node_labels.get(node, "?")
                 out.setdefault(_loc(site), OutOfOrder(
@@ -504,6 +519,19 @@ class UsageBuilder:
                     nodes = _obj_sites(eff.arg("node")) if eff.kind == "node_destroy" else None
                     if nodes is not None and len(nodes) == 1:
                         destroyed.setdefault(next(iter(nodes)), i)
+
+    def _nodes_made(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
+        """The object sites of the nodes the call may make, on any path through it."""
+        if site.callee[0] == "lib":
+            return frozenset().union(*(
+                _obj_sites(eff.arg("target")) or () for eff in site.effects if eff.kind == "node"))
+        task = site.callee[1]
+        if task not in memo:
+            memo[task] = frozenset()  # recursion: nothing known
+            memo[task] = frozenset().union(*(
+                self._nodes_made(s, memo, depth + 1) for s in self.calls.sites(task))) \
+                if depth < 8 else frozenset()
+        return memo[task]
 
     def _creates_on(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
         """The nodes the call creates an entity on, on every path through it."""
@@ -539,6 +567,8 @@ class UsageBuilder:
     # -- periods -----------------------------------------------------------------------
     def _periods(self) -> list[PeriodArgument]:
         out = []
+        stopped = frozenset().union(*(_obj_sites(eff.arg("timer")) or () for eff in self.effects
+                                      if eff.kind == "timer_stop"))
         for eff in self.effects:
             if eff.kind == "timer":
                 value, what = eff.arg("period"), "timer period"
@@ -547,8 +577,9 @@ class UsageBuilder:
             else:
                 continue
             consts = value.consts() if not value.soft else None
+            timer = _obj_sites(eff.arg("object")) if eff.kind == "timer" else None
             out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None,
-                                      eff.conditional))
+                                      eff.conditional, bool(timer and timer & stopped)))
         return out
 
 

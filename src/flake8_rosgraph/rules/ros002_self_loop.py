@@ -32,7 +32,10 @@ class SelfLoop(Rule):
     makes a loop, nor does one rclpy rejects (ROS006: that end never exists), nor a name known only partly (`param if launched else '/scan'`). A node that launch files start in a namespace (one per robot)
     and that publishes and subscribes an absolute name is not reported: the
     absolute name is a bus its instances share on purpose (a swarm's votes),
-    and each instance hears the others. A node class instantiated by several executables that each
+    and each instance hears the others. A topic that two or more nodes of different names
+    each publish and subscribe with one type is a channel they share on purpose
+    (each stage of a pipeline announces its state and follows the others'): it
+    is not reported for any of them. A node class instantiated by several executables that each
     add entities from their own module (a reader executable publishing what a
     parser executable subscribes to, on one driver class) is not a loop: ends
     created in two files other than the node's own (the file that creates it,
@@ -78,6 +81,7 @@ class SelfLoop(Rule):
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         exempt = ExemptNames.build(config.external_names)
         namespaced = packages_maybe_namespaced(graph)
+        buses = _shared_buses(graph)
         for node in graph.nodes:
             instances = launched_in_namespace(node) or (node.launch is None and in_package(node, namespaced))
             harness = node_scope(node) is not None
@@ -91,12 +95,36 @@ class SelfLoop(Rule):
                     continue
                 if instances and _absolute(sub) and all(_absolute(p) for p in published[sub.name]):
                     continue  # one bus shared by the instances in their namespaces: each hears the others
+                if sub.name in buses and all(_same_type(p, sub) for p in published[sub.name]):
+                    continue  # several nodes talk and listen on it: each hears the others
                 pubs = sorted((p for p in published[sub.name] if _same_program(node, p, sub)
                                and not (harness and _same_type(p, sub))), key=lambda e: e.location)
                 if pubs:
                     message = (f"node '{node.fqn or '?'}' subscribes to topic '{sub.name}' that it publishes "
                                f"at {pubs[0].location.short()}")
                     yield Finding(sub.location, self.code, message, tuple(related(p) for p in pubs))
+
+
+def _shared_buses(graph: RosGraph) -> frozenset[str]:
+    """The topics that two or more nodes of different names each publish and subscribe, with
+    one type.
+
+    A state or heartbeat channel (``/llm_state``: each stage of a pipeline announces its state
+    and listens for the others') is a bus the nodes share on purpose: each one's subscription
+    is there to hear the other publishers. A subscription renamed by mistake to a node's own
+    output makes a loop on one node only, or one of another type. Nodes of one name are
+    alternatives or instances of one program, not several members.
+    """
+    looping: dict[str, set[str | int]] = defaultdict(set)
+    types: dict[str, set[str]] = defaultdict(set)
+    for node in graph.nodes:
+        published = {p.name: p for p in node.of_kind("publishers") if p.name is not None and not p.partial}
+        for sub in node.of_kind("subscriptions"):
+            pub = published.get(sub.name)
+            if pub is not None and not sub.partial and _same_type(pub, sub):
+                looping[sub.name].add(node.fqn or id(node))
+                types[sub.name].update(t for t in (pub.type, sub.type) if t is not None)
+    return frozenset(name for name, nodes in looping.items() if len(nodes) > 1 and len(types[name]) <= 1)
 
 
 def _absolute(entity: Entity) -> bool:

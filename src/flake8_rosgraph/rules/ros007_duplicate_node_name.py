@@ -62,7 +62,9 @@ class DuplicateNodeName(Rule):
     instance (two bring-ups of one safety monitor, one remapping its output
     onto what the other's input reads) is two deployments: their talk does
     not make them run together. An end whose name rclpy rejects (ROS006)
-    never exists, so it ties no two nodes together.
+    never exists, so it ties no two nodes together; nor does a topic that
+    both nodes publish and subscribe (a state channel two alternative programs
+    of one role each announce on and listen to: each hears itself there too).
 
     ## Example
     ```python
@@ -236,7 +238,8 @@ class _Together:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node \
-                            and not self._configurations_of_one_node(node, peer.node):
+                            and not self._configurations_of_one_node(node, peer.node) \
+                            and not (_on_bus(node, entity.name) and _on_bus(peer.node, entity.name)):
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
     def _configurations_of_one_node(self, a: RosNode, b: RosNode) -> bool:
@@ -246,6 +249,15 @@ class _Together:
         launch file starting both is reported above."""
         return a.location == b.location and a.launch is not None and b.launch is not None \
             and not set(self._systems.get(id(a), ())) & set(self._systems.get(id(b), ()))
+
+
+def _on_bus(node: RosNode, name: str) -> bool:
+    """Whether ``node`` both publishes and subscribes topic ``name``. Two alternative programs
+    of one role (an audio input run locally or in the cloud) that each announce their state on
+    a shared channel and listen to it hear each other there as they hear themselves: that is
+    no sign that they run together."""
+    roles = {e.kind for e in node.entities if e.name == name}
+    return {"publishers", "subscriptions"} <= roles
 
 
 #: What a finding of :meth:`DuplicateNodeName._as_written` adds to say where the names clash.

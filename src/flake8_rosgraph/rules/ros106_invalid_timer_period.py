@@ -8,6 +8,10 @@ from ..graph.model import RosGraph
 from .base import Finding, Rule, RuleConfig
 
 
+def _zero(value) -> bool:
+    return type(value) in (int, float) and value == 0
+
+
 def _problem(what: str, value) -> str | None:
     """Why rclpy rejects (or busy-loops on) ``value`` as a timer period / rate frequency."""
     if isinstance(value, bool):
@@ -52,8 +56,12 @@ class InvalidTimerPeriod(Rule):
     default the environment can override (a ROS parameter, a command-line
     option) is not judged. Every possible value is checked, so a value that is
     invalid on one branch only is reported too — unless the timer is created on
-    some paths only and some of its values are valid: the analysis does not
-    narrow a value by the test that guards the creation (`if period > 0:`).
+    some paths only and some of its values are valid. A test that compares a
+    local with a constant (`if period > 0:`, `if period:`) rules the failing
+    values out of the branch; other guards (`if self.ready():`) do not.
+    A timer of period 0 that the code cancels or destroys somewhere
+    (`self.timer.cancel()` in its callback, `destroy_timer(self.timer)`) is a
+    one-shot that runs once when the executor starts, and is not reported.
 
     ## Example
     ```python
@@ -82,7 +90,8 @@ class InvalidTimerPeriod(Rule):
         if usage is None:
             return
         for arg in usage.periods:
-            values = sorted(arg.values or (), key=repr)
+            # A timer the code stops runs its callback once at period 0, then no more.
+            values = sorted((v for v in arg.values or () if not (arg.stopped and _zero(v))), key=repr)
             problems = [p for p in (_problem(arg.what, v) for v in values) if p is not None]
             if arg.conditional and len(problems) < len(values):
                 continue  # the test that guards the creation may be what excludes the bad value

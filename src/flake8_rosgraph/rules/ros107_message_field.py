@@ -78,10 +78,13 @@ class MessageField(Rule):
     classes take keyword arguments only: `String('hi')` is a `TypeError`.
 
     ## Known problems
-    Field definitions come from the standard interface packages shipped with
-    the tool, the workspace's own `.msg`/`.srv`/`.action` files and the folders
-    given with `--rosgraph-interfaces`; a message of any other package is not
-    checked. Only values the analysis knows are judged (constants, message
+    Field definitions come from the interface packages shipped with the tool
+    (the core ones, and nav2_msgs, vision_msgs, control_msgs, moveit_msgs,
+    geographic_msgs, ackermann_msgs, turtlesim, controller_manager_msgs,
+    irobot_create_msgs and map_msgs, except the messages whose fields differ
+    between ROS distributions), the workspace's own `.msg`/`.srv`/`.action`
+    files and the folders given with `--rosgraph-interfaces`; a message of any
+    other package is not checked. Only values the analysis knows are judged (constants, message
     instances, lists of known elements); `msg.x = float(v)` or a value from a
     parameter of unknown type is accepted. A value that may be objects of
     different kinds (a message on one path, a tuple on another the analysis

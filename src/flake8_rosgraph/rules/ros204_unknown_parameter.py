@@ -29,7 +29,10 @@ class UnknownParameter(Rule):
     Only Python nodes whose code is in the workspace are judged (C++ nodes
     may declare parameters through generated code), and a node that
     allows undeclared parameters (`allow_undeclared_parameters=True`) or
-    declares one whose name the analysis cannot determine is skipped.
+    declares one whose name the analysis cannot determine is skipped. A name
+    written at a declaration call (`declare_parameter('can_bus', …)`) that the
+    analysis did not tie to a known node — a plugin loaded by name, a builder
+    chain it lost — may be declared on any node: it is not reported.
     `SetParameter` values (meant for every node of a scope) are not judged.
     rcl hands a process's parameters to every node it creates, so a value
     is reported only when no node of that process that receives it declares
@@ -70,10 +73,13 @@ class UnknownParameter(Rule):
     summary = "a launch file or parameter YAML sets a parameter the node never declares"
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
+        # Names written at declarations the analysis did not tie to a known node: some node
+        # may declare them unseen (a builder chain it lost, a wrapper on an unknown receiver).
+        unseen = graph.usage.unattributed_parameters if graph.usage is not None else frozenset()
         for system in graph.systems:
-            yield from self._system(system)
+            yield from self._system(system, unseen)
 
-    def _system(self, system: System) -> Iterator[Finding]:
+    def _system(self, system: System, unseen: frozenset[str]) -> Iterator[Finding]:
         """rcl hands a process's parameters to every node it creates, and a launch file may hand
         one parameter source (a dict it shares, a file section) to several processes: a value is
         ignored only when no node that receives it from that place declares it, and that is known
@@ -112,7 +118,7 @@ class UnknownParameter(Rule):
                         shared.add((name, location))
                     receivers.setdefault((name, location), []).append(instance)
         for (name, location), nodes in sorted(receivers.items(), key=lambda kv: (kv[0][1], kv[0][0])):
-            if (name, location) in excused or any(name in declared[id(i)] for i in nodes):
+            if (name, location) in excused or name in unseen or any(name in declared[id(i)] for i in nodes):
                 continue
             known = set().union(*(declared[id(i)] for i in nodes))
             close = sorted(k for k in known if k and names.edit_distance(k, name, 2) <= 2)

@@ -18,6 +18,7 @@ setup(
             'uploader = drive_base.uploader:main',
             'distro_driver = drive_base.distro_cmd:main',
             'recorder = drive_base.stamps:main',
+            'mission = drive_base.mission:main',
         ],
     },
 )

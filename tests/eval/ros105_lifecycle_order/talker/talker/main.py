@@ -37,3 +37,28 @@ def ordered():
     again = Talker('again')
     again.destroy_node()
     rclpy.try_shutdown()
+
+
+def reconnect():
+    """The same helper makes the node anew after the first one was destroyed: each life is in
+    order (the twin of ``handover``)."""
+    rclpy.init()
+    node = make_talker('probe')
+    rclpy.spin_once(node, timeout_sec=1.0)
+    node.destroy_node()
+    node = make_talker('probe')
+    node.add_heartbeat()
+    rclpy.spin_once(node)
+    node.destroy_node()
+    rclpy.shutdown()
+
+
+def handover():
+    """Another node made after the destroy does not bring the first one back."""
+    rclpy.init()
+    node = Talker()
+    node.destroy_node()
+    spare = make_talker('spare')
+    node.add_heartbeat()  # ROS105
+    rclpy.spin(spare)
+    rclpy.shutdown()

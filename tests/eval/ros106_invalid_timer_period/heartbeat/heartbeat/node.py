@@ -46,3 +46,24 @@ class Watchdog(Node):
 
     def check(self):
         pass
+
+
+class Starter(Node):
+    """Period 0 as a one-shot: the callback cancels its own timer, so it runs once when the
+    executor starts spinning. Cancelling another timer does not make a timer one-shot."""
+
+    def __init__(self):
+        super().__init__('starter')
+        self.start_timer = self.create_timer(0.0, self.start)
+        self.poll_timer = self.create_timer(0, self.poll)  # ROS106
+        self.watch_timer = self.create_timer(1.0, self.watch)
+
+    def start(self):
+        self.start_timer.cancel()
+        self.get_logger().info('started')
+
+    def poll(self):
+        self.destroy_timer(self.watch_timer)
+
+    def watch(self):
+        pass
