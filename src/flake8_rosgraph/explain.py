@@ -18,14 +18,16 @@ unrelated class with a method of the same name is listed as "not reached".
 from __future__ import annotations
 
 import ast
+import re
 from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 from .absint.engine import Analysis, Effect
 from .absint.fixtures import Fixtures
-from .absint.values import BOTTOM
+from .absint.values import BOTTOM, Obj
 from .absint.library import FunctionModel, LibraryModel
 from .absint.objects import analysed_unresolved_base, analysed_user_bases
+from .absint.passed_in import passed_in_parameter
 from .absint.program import Function, Module, Program
 from .graph.builder import ENTITY_KINDS, unpaired_types
 from .graph.model import NAMED_KINDS, Entity, RosGraph
@@ -248,7 +250,8 @@ class _Explainer:
         unknowns = self._unknowns(key, effects)
         if unknowns is None:
             return Explanation(site, "missing", (
-                "the object it is created on is not known to be a node here",
+                *(self._passed_in_reasons(effects)
+                  or ["the object it is created on is not known to be a node here"]),
                 *self._origin_reasons(call, scope, _node_argument(call), module),))
         func = self._function_of(scope)
         if not unknowns:
@@ -306,7 +309,7 @@ class _Explainer:
                 out.append("unknown name" + _partly_known(e for _, e in found))
             if any(e.kind in NAMED_KINDS and e.type is None for _, e in found):  # typed kinds only
                 out.append("unknown type")
-            if any(n.unresolved_base for n, _ in found):
+            if any(n.unresolved_base or n.passed_in for n, _ in found):
                 out.append("unknown node")
         return out
 
@@ -445,12 +448,34 @@ class _Explainer:
         fid = self.program.fid_of.get(id(scope))
         return None if fid is None else self.program.functions[fid]
 
+    def _passed_in_reasons(self, effects: list[Effect]) -> list[str]:
+        """Why the node a parameter annotated as a node stands for is not in the graph: analysed
+        code calls the function too, with a node it does not know (see :mod:`.absint.passed_in`)."""
+        out = []
+        for eff in effects:
+            for obj in eff.arg("node"):
+                found = passed_in_parameter(obj.site) if isinstance(obj, Obj) else None
+                if found is not None:
+                    out.append(f"it is created on parameter `{found[1]}` of "
+                               f"{self.program.functions[found[0]].qualname}, a node, which analysed "
+                               "code passes without the analysis knowing which node it is")
+        return list(dict.fromkeys(out))
+
     def _presumed_reasons(self, key: tuple) -> list[str]:
-        """Why the node of an entity is unknown: its class's base class is not resolved."""
-        return [f"class {node.cls} is presumed to be a node: its base class {node.unresolved_base} "
-                "is not resolved (imported from a library no stub models), so its name and "
-                "namespace are unknown; a stub for the base class gives them"
-                for node, _ in self.graph_entities.get(key, []) if node.unresolved_base]
+        """Why the node of an entity is unknown: its class's base class is not resolved, or it
+        is the node a function is handed by callers the analysis does not see."""
+        out = []
+        for node, _ in self.graph_entities.get(key, []):
+            if node.unresolved_base:
+                out.append(f"class {node.cls} is presumed to be a node: its base class "
+                           f"{node.unresolved_base} is not resolved (imported from a library no "
+                           "stub models), so its name and namespace are unknown; a stub for the "
+                           "base class gives them")
+            elif node.passed_in:
+                out.append(f"its node is the {node.passed_in}, annotated as a node, which no "
+                           "analysed code calls with a node: its name and namespace are the "
+                           "caller's, unknown here")
+        return out
 
     def _owner_reasons(self, key: tuple) -> list[str]:
         """Why a name written in full came out unknown: the node it is relative to."""
@@ -484,6 +509,13 @@ class _Explainer:
                 ref = dict(spec.args).get(arg)
                 if spec.kind == eff.kind and ref is not None and ref.how in ("arg", "overridable"):
                     return ref.data, _argument(call, model.signature, ref.data)
+                if spec.kind == eff.kind and ref is not None and ref.how == "format":
+                    # A name the library builds from parameters (``{node_name}/set_parameters``):
+                    # the first of them the call passes is where an unknown part comes from.
+                    for param in re.findall(r"\{(\w+)", ref.data):
+                        argument = _argument(call, model.signature, param)
+                        if argument is not None:
+                            return param, argument
         return None, None
 
     def _star_binding(self, name: str, module: Module) -> str | None:
@@ -500,6 +532,22 @@ class _Explainer:
         return (f"`{name}` can only come from `from … import *` of {', '.join(f'`{s}`' for s in sources)}, "
                 "outside the workspace: the names it binds are not known")
 
+    def _library_import(self, name: str, module: Module) -> str | None:
+        """A name the module imports from outside the workspace (``from tf2_geometry_msgs
+        import PointStamped``) that no stub models and that is not an interface module's."""
+        for stmt in module.tree.body:
+            if not isinstance(stmt, ast.ImportFrom) or stmt.level or not stmt.module:
+                continue
+            for alias in stmt.names:
+                qual = f"{stmt.module}.{alias.name}"
+                if (alias.asname or alias.name) != name \
+                        or self.program.resolve_import(module, stmt.module, 0) in self.program.modules \
+                        or self.library.knows(qual) or stmt.module.split(".")[-1] in ("msg", "srv", "action"):
+                    continue
+                return (f"`{name}` is imported from `{stmt.module}`, outside the workspace, which no "
+                        "stub models: what it is is not known")
+        return None
+
     def _origin_reasons(self, call: ast.Call, scope: ast.AST | None, expr: ast.expr | None,
                         module: Module) -> list[str]:
         """Where the value of ``expr`` comes from, in words (what made it unknown)."""
@@ -509,7 +557,7 @@ class _Explainer:
         for name in sorted({n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}
                            - {"self", "cls"}):
             binding = _binding_of(name, scope, call) or _module_binding(name, module) \
-                or self._star_binding(name, module)
+                or self._star_binding(name, module) or self._library_import(name, module)
             if binding:
                 out.append(binding)
         calls = [sub for sub in ast.walk(expr) if isinstance(sub, ast.Call)]
@@ -780,7 +828,8 @@ def _binding_of(name: str, scope: ast.AST | None, call: ast.Call) -> str | None:
             return (f"it depends on loop variable `{name}` over `{_short(node.iter)}`, "
                     "whose elements are unknown")
         if isinstance(node, ast.Assign) and node.lineno <= call.lineno and any(
-                isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt)):
+                isinstance(t, ast.Name) and t.id == name for tgt in node.targets for t in ast.walk(tgt)) \
+                and not isinstance(node.value, ast.Constant):  # a literal is known: not the cause
             return f"it depends on `{name} = {_short(node.value)}`, whose value is unknown"
         if isinstance(node, ast.withitem) and node.optional_vars is not None and any(
                 isinstance(t, ast.Name) and t.id == name for t in ast.walk(node.optional_vars)):

@@ -68,3 +68,15 @@ def test_production_unknowns_are_not_filled_by_a_fixture():
     # a fixture subscribing to a name the analysis could not resolve does not excuse a production end
     unknown = node("probe", sub(None), path="odom_filter/test/test_filter.py")
     assert "ROS001" in " ".join(messages(graph(*production(unknown)), select=["ROS001"]))
+
+
+def test_two_launch_test_modules_never_run_together():
+    # launch_testing's ``*.test.py`` modules (CMake's add_launch_test) are test runs of their own,
+    # like ``test_*.py``: a best-effort publisher in one never meets a reliable subscription in another
+    best_effort = node(None, pub("/a_topic", qos={"reliability": "best_effort"}),
+                       path="bridge_server/test/websocket/best_effort.test.py", namespace=None)
+    smoke = node(None, sub("/a_topic", qos={"reliability": "reliable"}),
+                 path="bridge_server/test/websocket/smoke.test.py", namespace=None)
+    assert messages(graph(best_effort, smoke), select=["ROS005"]) == []
+    smoke.location = type(smoke.location)("bridge_server/test/websocket/best_effort.test.py", 40, 9)
+    assert [m[:6] for m in messages(graph(best_effort, smoke), select=["ROS005"])] == ["ROS005"]

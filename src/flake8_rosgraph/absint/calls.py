@@ -25,6 +25,7 @@ from .folding import (PURE_BUILTINS, PURE_LIBRARY, call_str_method, fold, fold_t
                       wide_template)
 from .frame import Frame
 from .library import FunctionModel, Ref, ReturnSpec, StandIn
+from .passed_in import annotation, passed_in_site
 from .program import Function
 from .typetests import isinstance_value
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const, DictAtom,
@@ -181,9 +182,10 @@ class CallSemantics:
         func = self.program.functions[fid]
         ctx = self.bind_user(func, receiver, Args([], {}, False))
         if ctx is None:
-            ctx = tuple(TOP if v.is_bottom else v for v in
-                        self._bind_loose(func, receiver))
-        return ctx
+            return tuple(TOP if v.is_bottom else v for v in self._bind_loose(func, receiver))
+        # A parameter nothing gave (no default) may be an object the caller made out of sight.
+        return tuple(self._passed_in(func, name) if value.is_top else value
+                     for name, value in zip(self.param_names(func), ctx))
 
     def entry_contexts(self, fid: int) -> list[tuple]:
         """The contexts a function no analysed code calls is analysed in: its default context
@@ -203,7 +205,33 @@ class CallSemantics:
     def _bind_loose(self, func: Function, receiver: Atom | None) -> list[Value]:
         names = self.param_names(func)
         first = [atoms([receiver])] if receiver is not None else []
-        return first + [TOP] * (len(names) - len(first))
+        return first + [self._passed_in(func, name) for name in names[len(first):]]
+
+    def _passed_in(self, func: Function, name: str) -> Value:
+        """What an entry's parameter ``name`` holds: unknown, or the object of unknown identity
+        its annotation's class stands for when the library says such objects are passed in
+        (see :mod:`.passed_in`). A pytest fixture's parameter keeps the fixture's value."""
+        written = annotation(func, name)
+        if written is None or name in self.fixtures.arguments(func):
+            return TOP
+        outer, self.frame = self.frame, Frame(("mod", func.module.name, ()), func.module)
+        try:
+            cls = self._annotated_class(written, func.module)
+        finally:
+            self.frame = outer
+        if not isinstance(cls, Extern) or not self.lib.class_flag(cls.qualname, "passed_in"):
+            return TOP
+        return atoms([Obj(passed_in_site(func.fid, name), cls)])
+
+    def _annotated_class(self, expr: ast.expr, module) -> Atom | None:
+        """The one class a dotted annotation names, read in ``module``'s globals."""
+        value = self.load_global(module, expr.id) if isinstance(expr, ast.Name) else None
+        if isinstance(expr, ast.Attribute):
+            holder = self._annotated_class(expr.value, module)
+            value = self.load_attr(atoms([holder]), expr.attr) if holder is not None else None
+        if value is None or value.is_top or value.is_bottom or len(value.atoms) != 1:
+            return None
+        return next(iter(value.atoms))
 
     def call_user(self, fid: int, receiver: Atom | None, args: "Args", node=None) -> Value:
         func = self.program.functions[fid]

@@ -14,7 +14,7 @@ from .calls import Args
 from .containers import MUTATORS, may_be_filled_elsewhere, mutated
 from .enums import is_member_site
 from .exclusion import narrow
-from .rows import LoopRows, rows_of
+from .rows import LoopRows, rows_of, user_call_per_row
 from .values import (BOOLS, BOTTOM, MAX_ATOMS, TOP, Atom, BoundMethod, ClassAtom, Coll, Const,
                      DictAtom, Extern, ExternBound, FuncAtom, ModuleAtom, Obj, Seq, Value, atoms,
                      const, join_all, joined, soften)
@@ -263,7 +263,11 @@ class ExpressionSemantics:
             reaching = self._reaching_rows(table) if used else None
             if reaching is not None and (best is None or len(used) > len(read.intersection(best[1].names))):
                 best = (loop, table, reaching)
-        if best is None or not (setter or self._creates(self.eval(node.func))):
+        if best is None:
+            return None
+        func = self.eval(node.func)
+        paired = len(read.intersection(best[1].names))
+        if not (setter or self._creates(func) or user_call_per_row(func, paired, len(best[2]))):
             return None
         loop, table, reaching = best
         holders = [self._holder(name) for name in table.names]

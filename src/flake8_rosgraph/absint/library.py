@@ -223,6 +223,11 @@ class ClassModel:
     #: ``plugin.xml`` ``base_class_type``): the framework behind it builds the classes
     #: registered so, whatever their Python base (see :meth:`LibraryModel.registered_base`).
     registered_as: tuple[str, ...] = ()
+    #: Objects of this class are made by code the analysis cannot see and handed over: a
+    #: function no analysed code calls, whose parameter is annotated with the class, gets one
+    #: object standing for what its caller passes (a node handed to a helper; see
+    #: :mod:`.passed_in`) instead of an unknown value.
+    passed_in: bool = False
 
 
 #: Kinds a stand-in method's argument may be required to have: a class (a message type),
@@ -374,7 +379,7 @@ class LibraryModel:
 _FUNC_KEYS = {"params", "returns", "effects", "stores", "callbacks", "callback_args", "blocking",
               "blocks_for"}
 _CLASS_KEYS = {"bases", "methods", "record", "entry", "calls_methods", "stand_in_for_unresolved",
-               "entry_args", "registered_as"}
+               "entry_args", "registered_as", "passed_in"}
 _TOP_KEYS = {"functions", "classes", "constants", "aliases", "meta", "true_instances"}
 
 
@@ -496,7 +501,7 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
         raise StubError(f"{where}: unknown key {sorted(unknown)[0]!r}")
     methods = {name: _function(f"{qualname}.{name}", m, f"{where}.methods.{name}")
                for name, m in _table(raw.get("methods", {}), where + ".methods").items()}
-    for flag in ("record", "entry"):
+    for flag in ("record", "entry", "passed_in"):
         if not isinstance(raw.get(flag, False), bool):
             raise StubError(f"{where}.{flag}: expected true or false")
     return ClassModel(qualname, _strings(raw.get("bases", []), where + ".bases"), methods,
@@ -505,7 +510,8 @@ def _class(qualname: str, raw: Any, where: str) -> ClassModel:
                       _stand_ins(qualname, raw.get("stand_in_for_unresolved", {}),
                                  where + ".stand_in_for_unresolved"),
                       _strings(raw.get("entry_args", []), where + ".entry_args"),
-                      _strings(raw.get("registered_as", []), where + ".registered_as"))
+                      _strings(raw.get("registered_as", []), where + ".registered_as"),
+                      raw.get("passed_in", False))
 
 
 def _stand_ins(owner: str, raw: Any, where: str) -> dict[str, StandIn]:

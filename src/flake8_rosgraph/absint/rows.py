@@ -11,7 +11,10 @@ those rows beside the joined binding; a call that creates something and whose ar
 read the loop variables (and call nothing) is then evaluated once per row, with the
 variables bound to that row's values (see ``ExpressionSemantics.e_Call``); so is a
 ``setattr(obj, key, value)`` whose ``key`` is a loop variable (a configuration filled from a
-table of parameter defaults), whatever its value calls.
+table of parameter defaults), whatever its value calls; and a call of the workspace's own
+function that is given several columns of a short table (``wait_for_service(node, name,
+srv_type)`` for each row of a name -> type table): each row is then a calling context of
+its own, so the function creates each name with its own type.
 
 This module only reads values: which rows a loop target takes. The interpreter binds them.
 """
@@ -20,10 +23,13 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
-from .values import Seq, Value
+from .values import BoundMethod, FuncAtom, Seq, Value
 
 #: Rows kept per loop at most: past it the joined binding alone is used.
 ROW_LIMIT = 64
+#: Rows a call of a workspace function is split into at most: each is a calling context, and
+#: the contexts a function keeps its arguments in are bounded (see ``Analysis.function_task``).
+USER_CALL_ROWS = 8
 
 
 @dataclass(frozen=True)
@@ -73,3 +79,13 @@ def rows_of(target: ast.AST, iterable: Value) -> tuple[tuple[str, ...], tuple[tu
     if not rows or len(rows) > ROW_LIMIT:
         return None
     return names, tuple(dict.fromkeys(rows))
+
+
+def user_call_per_row(func: Value, columns: int, rows: int) -> bool:
+    """Whether a call of ``func`` in a loop over a table, given ``columns`` of its variables,
+    is split per row: ``func`` is the workspace's own code, the call pairs several columns
+    (a name with its type; one column alone loses nothing to the joined binding) and the
+    reaching rows fit the contexts the function keeps."""
+    if func.is_top or func.is_bottom or columns < 2 or rows > USER_CALL_ROWS:
+        return False
+    return all(isinstance(atom, (FuncAtom, BoundMethod)) for atom in func)

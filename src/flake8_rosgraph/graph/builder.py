@@ -20,6 +20,7 @@ from typing import Any, Iterable, Sequence
 
 from ..absint.engine import Analysis, Effect
 from ..absint.objects import analysed_user_bases
+from ..absint.passed_in import passed_in_parameter
 from ..absint.values import (Atom, BoundMethod, ClassAtom, Const, Extern, ExternBound, FuncAtom, Input,
                              Joined, Obj, Record, Seq, Slot, Coll, Value, wrapped)
 from . import names
@@ -222,6 +223,7 @@ class GraphBuilder:
         self._unseen: dict[int, tuple[str, ...]] = {}  # class id -> its names handed to unseen code
         self._by_short_name: dict[str, list[int]] | None = None
         self._workspace_tops = frozenset(name.split(".", 1)[0] for name in self.program.modules)
+        self._code_called: dict[str, bool] = {}  # passed-in site -> its function runs on callers' nodes too
 
     def build(self) -> RosGraph:
         effects = self.analysis.all_effects()
@@ -232,6 +234,8 @@ class GraphBuilder:
         for eff in effects:
             if "unresolved_base" in dict(eff.args):
                 self._add_presumed_node(eff)
+            elif eff.kind in ENTITY_KINDS or eff.kind == "timer":
+                self._add_passed_in_node(eff)
         entities: dict[int, dict[tuple, Entity]] = {}
         calls = SiteCalls()
         for eff in effects:
@@ -357,6 +361,31 @@ class GraphBuilder:
                 node = self.nodes[(location, None, None)] = RosNode(
                     None, None, location, klass.qualname, cls_path=klass.module.path, unresolved_base=base)
             self.by_object[obj.site] = [node]
+
+    def _add_passed_in_node(self, eff: Effect) -> None:
+        """The node a function's parameter stands for when no analysed caller passes one (see
+        :mod:`~flake8_rosgraph.absint.passed_in`): one per parameter, of unknown name and
+        namespace, located at the function. None when analysed code calls the function after
+        all (an entry whose name some code reads runs alongside its callers): the node is
+        then the one the callers pass."""
+        for obj in eff.arg("node"):
+            found = passed_in_parameter(obj.site) if isinstance(obj, Obj) else None
+            if found is None or obj.site in self.by_object or self._called_by_code(found[0], obj.site):
+                continue
+            func = self.program.functions[found[0]]
+            location = Location(func.module.path, func.node.lineno, func.module.column(func.node))
+            # Keyed by the parameter: two nodes handed to one function are two nodes.
+            self.by_object[obj.site] = [self.nodes.setdefault((location, None, obj.site), RosNode(
+                None, None, location, passed_in=f"parameter `{found[1]}` of {func.qualname}"))]
+
+    def _called_by_code(self, fid: int, site: str) -> bool:
+        """Whether function ``fid`` also ran on arguments analysed code gave: a run whose
+        arguments do not hold the passed-in object of ``site`` (asked once per site)."""
+        if site not in self._code_called:
+            self._code_called[site] = any(task[0] == "fn" and task[1] == fid and not any(
+                isinstance(a, Obj) and a.site == site for v in task[2] if not v.is_top for a in v)
+                for task in self.analysis.effects)
+        return self._code_called[site]
 
     def _owners(self, eff: Effect) -> list[RosNode]:
         if eff.kind == "node":

@@ -65,6 +65,8 @@ def _node(n: RosNode) -> dict[str, Any]:
         out["language"] = n.language
     if n.unresolved_base:
         out["unresolved_base"] = n.unresolved_base
+    if n.passed_in:
+        out["passed_in"] = n.passed_in
     return out
 
 

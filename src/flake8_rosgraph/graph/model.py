@@ -124,6 +124,10 @@ class RosNode:
     #: For a node presumed from Node API calls in a class whose base class is not resolved
     #: (an import no stub models): that base class. Its name and namespace are unknown.
     unresolved_base: str | None = None
+    #: For a node a function receives through a parameter annotated with a node class from
+    #: no analysed caller (:mod:`~flake8_rosgraph.absint.passed_in`): ``"<parameter> of
+    #: <function>"``. Its name and namespace are whatever the caller's node has: unknown.
+    passed_in: str | None = None
     #: Names the node's class writes as arguments of calls that hand the node to code the
     #: analysis cannot see (:mod:`.unseen_calls`): it may use them, in some role, through
     #: that code — as written, not expanded.

@@ -37,7 +37,9 @@ TEST_FOLDERS = frozenset({"test", "tests"})
 
 def _is_test_module(basename: str) -> bool:
     stem = basename.split(".", 1)[0]
-    return stem.startswith("test_") or stem.endswith("_test") or stem == "conftest"
+    # ``smoke.test.py``: a launch test named as CMake's ``add_launch_test`` runs it.
+    launch_test = basename.endswith(".test.py")
+    return stem.startswith("test_") or stem.endswith("_test") or stem == "conftest" or launch_test
 
 
 @lru_cache(maxsize=4096)
