@@ -102,6 +102,9 @@ class NodeParameters:
     location: Location
     open: bool                     # allows undeclared / declares from overrides / unknown names
     declared: frozenset[str]
+    #: It allows undeclared parameters or declares those the overrides hold: any name may be
+    #: read (``open`` alone may mean only that some declared name is unknown).
+    allows_undeclared: bool = False
 
 
 @dataclass(frozen=True)

@@ -362,6 +362,7 @@ class UsageBuilder:
     # -- parameters --------------------------------------------------------------------
     def _node_parameters(self) -> dict[str, NodeParameters]:
         open_: dict[str, bool] = {}
+        allows_undeclared: dict[str, bool] = {}
         locations: dict[str, Location] = {}
         for eff in self.effects:
             if eff.kind != "node":
@@ -370,6 +371,7 @@ class UsageBuilder:
                          for name in ("allow_undeclared", "auto_declare"))
             for site in _obj_sites(eff.arg("target")) or ():
                 open_[site] = open_.get(site, False) or allows
+                allows_undeclared[site] = allows_undeclared.get(site, False) or allows
                 locations.setdefault(site, _loc(eff))
         declared: dict[str, set[str]] = {site: set() for site in open_}
         for eff in self.effects:
@@ -385,7 +387,7 @@ class UsageBuilder:
                 else:
                     declared[site].update(names)
         return {site: NodeParameters(site, self.node_labels.get(site, "?"), locations[site],
-                                     open_[site], frozenset(declared[site]))
+                                     open_[site], frozenset(declared[site]), allows_undeclared[site])
                 for site in sorted(open_)}
 
     def _unattributed_parameters(self) -> frozenset[str]:

@@ -18,6 +18,17 @@ CONSEQUENCE = {
 }
 
 
+def _misspelt(name: str, close: list[str]) -> bool:
+    """Whether ``name`` reads as a slip of one of the ``close`` declared names: one edit away,
+    and not a name of its own that merely shares a stem (``speed_2`` beside ``speed_1``)."""
+    return any(names.edit_distance(declared, name, 1) <= 1 and not _numbered_sibling(declared, name)
+               for declared in close)
+
+
+def _numbered_sibling(a: str, b: str) -> bool:
+    return a.rstrip("0123456789") == b.rstrip("0123456789") and a != b
+
+
 class UndeclaredParameter(Rule):
     """## What it does
     Checks that every parameter a node reads with `get_parameter()`,
@@ -38,9 +49,12 @@ class UndeclaredParameter(Rule):
     ## Known problems
     Nodes created with `allow_undeclared_parameters=True` or
     `automatically_declare_parameters_from_overrides=True` (or an unknown value
-    for either), and nodes that declare a parameter whose name the analysis
-    cannot determine, are skipped; so is a use on an object that is not known to
-    be a node, or a name that is not known. Parameters rclpy declares itself
+    for either) are skipped. On a node that declares a parameter whose name the
+    analysis cannot determine (that one may be any name), only a read one
+    letter off a name the node declares is reported, as a misspelling of it (not
+    a numbered sibling: `step_height_2` beside `step_height_1`). A use on an
+    object that is not known to be a node, or of a name that is not known, is
+    skipped. Parameters rclpy declares itself
     (`use_sim_time`, `qos_overrides.*`, ...) count as declared. A read or set
     inside a `try` whose `except` clause may catch `ParameterNotDeclaredException`
     (it, `ParameterException`, `Exception`, a bare `except:`, or a class the
@@ -102,8 +116,11 @@ class UndeclaredParameter(Rule):
         if use.handled and use.how != "get_parameter_or":
             return  # ``try: get_parameter(...) except ParameterNotDeclaredException:`` handles it
         owners = [nodes.get(site) for site in use.nodes]
-        if any(owner is None or owner.open for owner in owners):
+        if any(owner is None or owner.allows_undeclared for owner in owners):
             return
+        # A declaration of a name the analysis does not know may be any name, but a read one
+        # letter off a name the node declares is a misspelling of it (``auto_standup_on_stat``).
+        near_miss_only = any(owner.open for owner in owners)
         for name in use.names:
             if name in BUILTIN_PARAMETERS or name.startswith(BUILTIN_PREFIXES):
                 continue
@@ -114,6 +131,8 @@ class UndeclaredParameter(Rule):
                        f"{use.how}() {CONSEQUENCE.get(use.how, 'fails')}")
             declared = sorted({d for owner in owners for d in owner.declared})
             close = [d for d in declared if names.edit_distance(d, name, 2) <= 2]
+            if near_miss_only and not _misspelt(name, close):
+                continue
             if close:
                 message += f"; did you mean '{close[0]}'?"
             yield Finding(use.location, self.code, message,
