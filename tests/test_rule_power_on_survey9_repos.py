@@ -89,3 +89,105 @@ def test_a_misspelt_namespace_attribute_is_reported(tmp_path: Path) -> None:
     reported = findings(root, ["ROS006", "ROS008"])
     assert sites(reported) == [("ROS008", "grasp_gui/grasp_gui/gui.py", 11),
                                ("ROS008", "grasp_gui/grasp_gui/gui.py", 23)]
+
+
+# -- a unit test hosting the node under test under its product name ---------------------------------
+RELAY = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Int32
+
+
+    class DelayedRelay:
+        \"\"\"Republishes every number it hears one tick later.\"\"\"
+
+        def __init__(self, node: Node) -> None:
+            self._node = node
+            self._pub = node.create_publisher(Int32, 'delayed_number', 10)
+            node.create_subscription(Int32, 'number', self._pub.publish, 10)
+
+
+    def main():
+        rclpy.init()
+        node = rclpy.create_node('delayed_relay')
+        DelayedRelay(node)
+        rclpy.spin(node)
+"""
+
+INCREMENTER = """
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import Int32
+
+
+    class Incrementer(Node):
+        def __init__(self):
+            super().__init__('incrementer')
+            self.create_subscription(Int32, 'number', self.on_number, 10)
+            self._pub = self.create_publisher(Int32, 'incremented_number', 10)
+
+        def on_number(self, msg):
+            self._pub.publish(Int32(data=msg.data + 1))
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Incrementer())
+"""
+
+SYSTEM_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='relay_demo', executable='incrementer', name='incrementer'),
+            Node(package='relay_demo', executable='delayed_relay', name='delayed_relay',
+                 remappings=[('number', 'incremented_number'), ('delayed_number', 'number')]),
+        ])
+"""
+
+RELAY_TEST = """
+    import rclpy
+    from std_msgs.msg import Int32
+
+    import relay_demo.delayed_relay
+
+
+    def test_relay_delays_each_number():
+        rclpy.init()
+        node = rclpy.create_node('delayed_relay')
+        relay_demo.delayed_relay.DelayedRelay(node)
+        probe = rclpy.create_node({probe})
+        feeder = probe.create_publisher(Int32, 'number', 10)
+        heard = []
+        probe.create_subscription(Int32, 'delayed_number', heard.append, 10)
+        feeder.publish(Int32(data=1))
+        rclpy.shutdown()
+"""
+
+
+def relay_workspace(root: Path, probe: str) -> Path:
+    return write(root, {
+        **ament_python("relay_demo", "'delayed_relay = relay_demo.delayed_relay:main', "
+                                     "'incrementer = relay_demo.incrementer:main'"),
+        "relay_demo/relay_demo/delayed_relay.py": RELAY,
+        "relay_demo/relay_demo/incrementer.py": INCREMENTER,
+        "relay_demo/launch/system.launch.py": SYSTEM_LAUNCH,
+        "relay_demo/test/test_delayed_relay.py": RELAY_TEST.format(probe=probe),
+    })
+
+
+def test_a_unit_test_hosting_the_node_under_test_does_not_run_beside_the_product(tmp_path: Path) -> None:
+    """dyno_ros2_courses: a test module creates ``delayed_relay`` to host the class under test
+    and feeds it '/number'; the launched product of that name talks over '/number' too. The
+    test stands in for the product (pytest runs it alone), so the two never run together."""
+    assert findings(relay_workspace(tmp_path, "'relay_probe'"), ["ROS007"]) == []
+
+
+def test_two_nodes_of_one_name_in_one_unit_test_are_reported(tmp_path: Path) -> None:
+    """The probe copied the name of the node it probes: within the test both run, and talk."""
+    reported = findings(relay_workspace(tmp_path, "'delayed_relay'"), ["ROS007"])
+    assert sites(reported) == [("ROS007", "relay_demo/test/test_delayed_relay.py", 9),
+                               ("ROS007", "relay_demo/test/test_delayed_relay.py", 11)]

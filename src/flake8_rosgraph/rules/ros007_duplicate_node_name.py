@@ -7,7 +7,7 @@ from typing import Iterator
 from ..graph.model import PEER_KIND, Location, RosGraph, RosNode
 from ..launch.model import LaunchedNode
 from .base import Finding, Rule, RuleConfig
-from .fixtures import node_scope
+from .fixtures import node_scope, test_run
 from .topics import Endpoint, EndpointIndex
 from .vocabulary import NAME_NOUN
 from .written import launched_names, written_graph
@@ -53,7 +53,9 @@ class DuplicateNodeName(Rule):
     files are not one process: a pytest module that creates a node of the
     same name in each test function is quiet, unless its nodes talk to each
     other or one launch test starts them; the nodes of two test modules in a
-    test folder never talk to each other. Two classes in two modules that one
+    test folder never talk to each other, and a test module's node never runs beside a node
+    it does not create (a test that hosts the node under test under its product name stands
+    in for the product, however the two would talk). Two classes in two modules that one
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
     creation site (`Node('a' if x else 'b')`) and nodes created by one call
@@ -236,6 +238,7 @@ class _Together:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node \
+                            and test_run(peer.node) == test_run(node) \
                             and not self._configurations_of_one_node(node, peer.node):
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
