@@ -191,3 +191,87 @@ def test_two_nodes_of_one_name_in_one_unit_test_are_reported(tmp_path: Path) -> 
     reported = findings(relay_workspace(tmp_path, "'delayed_relay'"), ["ROS007"])
     assert sites(reported) == [("ROS007", "relay_demo/test/test_delayed_relay.py", 9),
                                ("ROS007", "relay_demo/test/test_delayed_relay.py", 11)]
+
+
+# -- a test script beside the workspace calling the product's service ------------------------------
+MODBUS_MANAGER = """
+    import rclpy
+    from rclpy.node import Node
+    from std_srvs.srv import Trigger
+
+
+    class ModbusManager(Node):
+        def __init__(self):
+            super().__init__('modbus_manager')
+            self.create_service(Trigger, '/modbus_request', self.on_request)
+
+        def on_request(self, request, response):
+            response.success = True
+            return response
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ModbusManager())
+"""
+
+MOTOR_DEVICE = """
+    import rclpy
+    from rclpy.node import Node
+    from std_srvs.srv import Trigger
+
+
+    class MotorDevice(Node):
+        def __init__(self):
+            super().__init__('motor_device')
+            self.modbus = self.create_client(Trigger, '/modbus_request')
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(MotorDevice())
+"""
+
+FLASH_SCRIPT = """
+    import rclpy
+    from rclpy.node import Node
+    from std_srvs.srv import Trigger
+
+
+    class FlashControlTest(Node):
+        def __init__(self):
+            super().__init__('flash_control_test')
+            self.client = self.create_client(Trigger, {service})
+            while not self.client.wait_for_service(timeout_sec=1.0):
+                self.get_logger().info('waiting for the modbus service')
+
+
+    if __name__ == '__main__':
+        rclpy.init()
+        node = FlashControlTest()
+        node.client.call_async(Trigger.Request())
+        rclpy.spin(node)
+"""
+
+
+def modbus_workspace(root: Path, service: str) -> Path:
+    return write(root, {
+        **{f"colcon_ws/src/{rel}": text for rel, text in ament_python(
+            "modbus_driver", "'manager = modbus_driver.manager:main', 'motor = modbus_driver.motor:main'").items()},
+        "colcon_ws/src/modbus_driver/modbus_driver/manager.py": MODBUS_MANAGER,
+        "colcon_ws/src/modbus_driver/modbus_driver/motor.py": MOTOR_DEVICE,
+        "scripts/test_flash_control.py": FLASH_SCRIPT.format(service=service),
+    })
+
+
+def test_a_test_script_misspelling_a_product_service_is_reported(tmp_path: Path) -> None:
+    """robot_dc: ``scripts/test_flash_control.py`` (a test module by its name, so a fixture of
+    its own folder) calls the Modbus manager's service. The product is outside the fixture's
+    scope, so it never serves the script; but it still spells the name the script means."""
+    reported = findings(modbus_workspace(tmp_path, "'/mdobus_request'"), ["ROS008"])
+    assert sites(reported) == [("ROS008", "scripts/test_flash_control.py", 9)]
+    assert "did you mean '/modbus_request'" in reported[0][3]
+
+
+def test_a_test_script_calling_the_product_service_by_its_name_is_quiet(tmp_path: Path) -> None:
+    assert findings(modbus_workspace(tmp_path, "'/modbus_request'"), ["ROS008"]) == []
