@@ -193,6 +193,54 @@ def test_two_nodes_of_one_name_in_one_unit_test_are_reported(tmp_path: Path) -> 
                                ("ROS007", "relay_demo/test/test_delayed_relay.py", 11)]
 
 
+
+MONITOR = """
+    from rclpy.node import Node
+    from std_msgs.msg import Int32
+
+
+    class RelayMonitor(Node):
+        def __init__(self):
+            super().__init__('relay_monitor')
+            self.create_subscription(Int32, 'delayed_number', self.on_number, 10)
+
+        def on_number(self, msg):
+            self.get_logger().info(str(msg.data))
+"""
+
+MONITOR_TEST = """
+    import rclpy
+    from std_msgs.msg import Int32
+
+    from relay_demo.monitor import RelayMonitor
+
+
+    def test_monitor_logs_each_number():
+        rclpy.init()
+        monitor = RelayMonitor()
+        probe = rclpy.create_node({probe})
+        probe.create_publisher(Int32, 'delayed_number', 10).publish(Int32(data=1))
+        rclpy.spin_once(monitor, timeout_sec=1.0)
+        rclpy.shutdown()
+"""
+
+
+def monitor_workspace(root: Path, probe: str) -> Path:
+    relay_workspace(root, "'relay_probe'")
+    return write(root, {"relay_demo/relay_demo/monitor.py": MONITOR,
+                        "relay_demo/test/test_monitor.py": MONITOR_TEST.format(probe=probe)})
+
+
+def test_a_unit_test_probe_named_like_the_product_node_it_runs_is_reported(tmp_path: Path) -> None:
+    """The test runs the product's node class itself: its probe, named alike, runs beside it."""
+    reported = findings(monitor_workspace(tmp_path, "'relay_monitor'"), ["ROS007"])
+    assert sites(reported) == [("ROS007", "relay_demo/relay_demo/monitor.py", 7),
+                               ("ROS007", "relay_demo/test/test_monitor.py", 10)]
+
+
+def test_a_unit_test_probe_of_its_own_name_is_quiet(tmp_path: Path) -> None:
+    assert findings(monitor_workspace(tmp_path, "'monitor_probe'"), ["ROS007"]) == []
+
 # -- a test script beside the workspace calling the product's service ------------------------------
 MODBUS_MANAGER = """
     import rclpy

@@ -54,8 +54,8 @@ class DuplicateNodeName(Rule):
     same name in each test function is quiet, unless its nodes talk to each
     other or one launch test starts them; the nodes of two test modules in a
     test folder never talk to each other, and a test module's node never runs beside a node
-    it does not create (a test that hosts the node under test under its product name stands
-    in for the product, however the two would talk). Two classes in two modules that one
+    a production launch file starts (a test that hosts the node under test under its product
+    name stands in for the launched product, however the two would talk). Two classes in two modules that one
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
     creation site (`Node('a' if x else 'b')`) and nodes created by one call
@@ -238,7 +238,7 @@ class _Together:
                     continue
                 for peer in self._index.peers(Endpoint(node, entity, scope)):
                     if id(peer.node) in members and peer.node is not node \
-                            and test_run(peer.node) == test_run(node) \
+                            and not _unit_test_beside_launch(node, peer.node) \
                             and not self._configurations_of_one_node(node, peer.node):
                         yield f"they talk over {NAME_NOUN[entity.kind]} '{entity.name}'", node, peer.node
 
@@ -249,6 +249,14 @@ class _Together:
         launch file starting both is reported above."""
         return a.location == b.location and a.launch is not None and b.launch is not None \
             and not set(self._systems.get(id(a), ())) & set(self._systems.get(id(b), ()))
+
+
+def _unit_test_beside_launch(a: RosNode, b: RosNode) -> bool:
+    """Whether one of ``a``, ``b`` is a unit test's node and the other a node a production
+    launch file starts: pytest runs the test alone, never beside a launched system (a test
+    hosting the node under test under its product name stands in for the launched product)."""
+    return any(test_run(x) is not None and y.launch is not None and node_scope(y) is None
+               for x, y in ((a, b), (b, a)))
 
 
 #: What a finding of :meth:`DuplicateNodeName._as_written` adds to say where the names clash.
