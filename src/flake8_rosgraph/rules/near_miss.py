@@ -292,15 +292,15 @@ class NearMissFinder:
         it, unless another executable runs it: front ends of one driver class
         each add their own ends), and have a type that does not rule the match out. A
         misspelling (characters, case, plural) is also found in another test module of the
-        endpoint's scope (:meth:`Endpoint.spells_like`): that module never runs with the
-        endpoint, but it spells the name the endpoint means; how a name resolves, and its
-        namespace tokens, belong to the nodes of one run.
+        endpoint's scope, and for a test fixture in any production end (:meth:`Endpoint.spells_for`):
+        those never run with the endpoint, but they spell the name the endpoint means; how a
+        name resolves, and its namespace tokens, belong to the nodes of one run.
         """
         ranked = sorted((rank, other) for other, rank in self.candidates(endpoint).items())
         for (kind, _), other in ranked:
             for peer in self._peers[other]:
                 if (_other_program(peer.node, endpoint.node)
-                        and (endpoint.sees(peer) or (kind in (FOLDED, SPELLING) and endpoint.spells_like(peer)))
+                        and (endpoint.sees(peer) or (kind in (FOLDED, SPELLING) and endpoint.spells_for(peer)))
                         and types_compatible(endpoint.entity.type, peer.entity.type)
                         and (accept is None or accept(peer))):
                     return NearMiss(other, peer, kind)

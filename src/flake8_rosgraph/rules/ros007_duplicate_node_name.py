@@ -53,7 +53,9 @@ class DuplicateNodeName(Rule):
     files are not one process: a pytest module that creates a node of the
     same name in each test function is quiet, unless its nodes talk to each
     other or one launch test starts them; the nodes of two test modules in a
-    test folder never talk to each other. Two classes in two modules that one
+    test folder never talk to each other, and a test module's node never runs beside a node
+    a production launch file starts (a test that hosts the node under test under its product
+    name stands in for the launched product, however the two would talk). Two classes in two modules that one
     `main` instantiates together are not seen as one process (the graph does
     not record which entry point creates a node). Alternatives of one
     creation site (`Node('a' if x else 'b')`) and nodes created by one call
@@ -62,8 +64,7 @@ class DuplicateNodeName(Rule):
     instance (two bring-ups of one safety monitor, one remapping its output
     onto what the other's input reads) is two deployments: their talk does
     not make them run together; so are the nodes of one executable that two
-    such launch files start. A node a unit test creates never runs with the
-    nodes a production launch file starts (the test process runs on its own). An end whose name rclpy rejects (ROS006)
+    such launch files start. An end whose name rclpy rejects (ROS006)
     never exists, so it ties no two nodes together; nor does a topic that
     both nodes publish and subscribe (a state channel two alternative programs
     of one role each announce on and listen to: each hears itself there too).

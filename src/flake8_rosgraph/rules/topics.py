@@ -50,6 +50,13 @@ class Endpoint:
             self.scope is not None and other.scope is None
             and sees(self.scope, None, other.entity.location.path))
 
+    def spells_for(self, other: Endpoint) -> bool:
+        """Whether ``other``'s spelling of a name is evidence of how this end meant to spell
+        it: :meth:`spells_like`, or, for a test fixture, any production end (a test script
+        beside the workspace, ``scripts/test_flash.py``, calls the product's services by their
+        names: a misspelling of one is a slip, though the product is outside its scope)."""
+        return self.spells_like(other) or (self.scope is not None and other.scope is None)
+
     @property
     def run(self) -> str | None:
         """The test module whose run the end belongs to (:func:`.fixtures.test_run`)."""
