@@ -8,6 +8,7 @@ from ..graph.model import Entity, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .launch_context import in_package, packages_maybe_namespaced
 from .vocabulary import NAME_NOUN
+from .written import written_graph
 
 
 def _node_label(node: RosNode) -> str:
@@ -59,7 +60,9 @@ class InvalidName(Rule):
 
     ## Known problems
     The check needs the name: a name the analysis cannot determine is not
-    checked (see ROS010). Every possible value of a name is checked, so a
+    checked (see ROS010). A launched node is judged with the names the launch
+    file gives it, and also as written (`ros2 run`): a parameter's default in
+    code that the launch file's value replaces is reported when rcl rejects it. Every possible value of a name is checked, so a
     name that is invalid only on one branch is reported too. A namespace
     passed with `--ros-args -r __ns:=…` outside launch files is not seen: a
     node started that way in a namespace is still judged at the root. Under a
@@ -100,6 +103,7 @@ class InvalidName(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         namespaced = packages_maybe_namespaced(graph)
+        reported: set = set()
         for node in graph.nodes:
             if node.invalid:
                 yield Finding(node.location, self.code, f"rcl rejects node '{_node_label(node)}': {node.invalid}")
@@ -112,5 +116,23 @@ class InvalidName(Rule):
                             continue  # a launch file may start it in a namespace: the root is a guess
                         message += (" (built from the node's namespace, which is the root namespace '/'"
                                     f"{_where_root(node)}: ns + '/x' gives '//x')")
+                    reported.add(entity.location)
                     yield Finding(entity.location, self.code, message)
+        yield from _as_written(graph, reported)
+
+
+def _as_written(graph: RosGraph, reported: set) -> Iterator[Finding]:
+    """Names rcl rejects when a launched node runs as written (``ros2 run``): a parameter's
+    default in code that the launch file's value replaces (a space slipped into the default
+    topic crashes the node started without that launch file)."""
+    written = written_graph(graph)
+    for node in written.nodes if written is not None else ():
+        for entity in node.entities:
+            if entity.invalid and entity.location not in reported and not disabled_when_empty(entity) \
+                    and not names.built_at_root(entity.raw_name, node.namespace):
+                reported.add(entity.location)
+                shown = entity.raw_name if entity.raw_name is not None else entity.name
+                yield Finding(entity.location, InvalidName.code,
+                              f"rcl rejects {NAME_NOUN[entity.kind]} name '{shown}' when the node runs as "
+                              f"written (`ros2 run`), without the launch file's value: {entity.invalid}")
 
