@@ -25,7 +25,8 @@ class MessageTypeMismatch(Rule):
     outright wiring error.
 
     ## Known problems
-    Only endpoints whose types are known are compared. A node that creates the
+    Only endpoints whose types are known are compared, and never an end whose
+    name rcl rejects (ROS006): it is never created. A node that creates the
     same endpoint with either type (a run-time choice such as `Twist` on one
     ROS distribution, `TwistStamped` on another, in one call or in two) is not
     reported when one of its choices agrees, and a call whose every choice
@@ -71,8 +72,10 @@ class MessageTypeMismatch(Rule):
         for producer in PRODUCERS:
             consumer = PEER_KIND[producer]
             for name in sorted(set(index.names(producer)) | set(index.names(consumer))):
+                # An end whose name rcl rejects (ROS006) never exists: it carries no type.
                 typed = sorted((ep for ep in (*index.using(producer, name), *index.using(consumer, name))
-                                if ep.entity.type is not None), key=lambda ep: ep.sort_key)
+                                if ep.entity.type is not None and ep.entity.invalid is None),
+                               key=lambda ep: ep.sort_key)
                 # Production ends are judged together; a test fixture's ends with what they see
                 # (the fixtures of their scope, the production ends of the package under test),
                 # reported at the fixture's own ends only (see :mod:`.fixtures`).
