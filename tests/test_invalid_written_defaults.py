@@ -83,3 +83,43 @@ def test_an_invalid_default_the_launch_file_replaces_is_reported_as_written(tmp_
 
 def test_a_valid_default_is_quiet(tmp_path: Path) -> None:
     assert _invalid(tmp_path, "/agent/speech_input_status") == []
+
+
+CAMERA = """
+    import rclpy
+    from rclpy.node import Node
+    from sensor_msgs.msg import CompressedImage, Image
+
+
+    class ImageProcess(Node):
+        '''Each output is off while its topic parameter is empty.'''
+
+        def __init__(self):
+            super().__init__('image_process')
+            self.output_topic = self.declare_parameter('output_topic', '').value
+            self.compressed_topic = self.declare_parameter('compressed_topic', '').value
+            self.enable_raw = self.declare_parameter('enable_raw', True).value
+            self.enable_compressed = self.declare_parameter('enable_compressed', True).value
+            self.resized_topic = self.declare_parameter('resized_topic', '').value
+            self.resized_compressed_topic = self.declare_parameter('resized_compressed_topic', '').value
+            if self.enable_raw:
+                self.raw_pub = self.create_publisher(Image, self.output_topic, 10)
+                self.resized_pub = self.create_publisher(Image, self.resized_topic, 10)
+            if self.enable_compressed:
+                self.compressed_pub = self.create_publisher(CompressedImage, self.compressed_topic, 10)
+                self.resized_compressed_pub = self.create_publisher(
+                    CompressedImage, self.resized_compressed_topic, 10)
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(ImageProcess())
+"""
+
+
+def test_outputs_left_empty_make_no_type_mismatch(tmp_path: Path) -> None:
+    """Two outputs of different types, both on their empty default: rcl rejects the empty
+    name, so neither end exists, and there is no type mismatch between them (ROS004)."""
+    files = package("camera", "'process = camera.process:main'", {"process": CAMERA})
+    report = build_report(write(tmp_path, files), Settings())
+    assert [f.code for f in report.findings if f.code in ("ROS004", "ROS006")] == []

@@ -102,14 +102,3 @@ def test_one_call_whose_every_type_disagrees_is_reported_once_with_all_of_them()
         "but published as 'nav_msgs/msg/Odometry' at odom.py:2"]
     assert report(g) == ["ROS004 bridge.py:5"]
 
-
-def test_ends_whose_names_rcl_rejects_carry_no_type():
-    # ``topic = param.strip()``, empty when disabled: the ends on '' never exist (ROS006's business).
-    bad = "contains nothing (an empty name)"
-    g = graph(node("bridge", pub("", type="std_msgs/msg/String", invalid=bad),
-                   pub("", type="sensor_msgs/msg/Image", invalid=bad, line=5)),
-              node("viewer", sub("/image", type="sensor_msgs/msg/Image")))
-    assert codes(g, select=["ROS004"]) == []
-    g = graph(node("bridge", pub("/image", type="std_msgs/msg/String")),
-              node("viewer", sub("/image", type="sensor_msgs/msg/Image")))
-    assert codes(g, select=["ROS004"]) == ["ROS004"]
