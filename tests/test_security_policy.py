@@ -3,7 +3,8 @@ sros2's common/node.xml include and one of its own) grants the base driver its c
 and odometry, the planner its goal service and the dock action. The driver's odometry renamed
 in code but not in the policy, a DENY rule the node trips over, and a client the planner's
 profile never grants are reported; what the profiles grant (relative, ``~/`` and wildcard names,
-an included rule file) is quiet, and so is a profile with an include that cannot be read."""
+an included rule file) is quiet, and so is a profile with an include that cannot be read (a
+diagnostic names the include)."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -11,6 +12,7 @@ from pathlib import Path
 from test_recall_globals_and_escapes import package
 from test_workspace_discovery import write
 
+from flake8_rosgraph.analysis import build_graph
 from flake8_rosgraph.cache import build_report
 from flake8_rosgraph.options import Settings
 
@@ -137,3 +139,5 @@ def test_a_profile_with_an_include_that_cannot_be_read_is_not_judged(tmp_path: P
     judged; the driver's profile is."""
     assert [name for _, _, name in _findings(tmp_path, actions=None)] == [
         "/robot/odometry", "/robot/wheels/debug/imu"]
+    said = [d for d in build_graph(tmp_path).diagnostics if "planner_actions.xml" in d.message]
+    assert [(d.path, d.line, d.severity) for d in said] == [("delivery/policies/delivery.policy.xml", 22, "info")]

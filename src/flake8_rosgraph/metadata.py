@@ -67,7 +67,7 @@ def read_metadata(root: Path) -> WorkspaceMetadata:
     except Exception as exc:
         meta.diagnostics.append(internal_error("interface definitions not read", exc))
     try:
-        meta.policy_profiles = read_policies(root, policy_files(root, meta.diagnostics), meta.diagnostics)
+        meta.policy_profiles = read_policies(root, policy_files(root), meta.diagnostics)
     except Exception as exc:
         meta.diagnostics.append(internal_error("SROS2 policy files not read", exc))
     return meta

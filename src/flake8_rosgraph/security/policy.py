@@ -64,7 +64,7 @@ class PolicyProfile:
     open: bool
 
 
-def policy_files(root: Path, diagnostics: list[Diagnostic]) -> list[str]:
+def policy_files(root: Path) -> list[str]:
     """Root-relative paths of the XML files whose root element is an SROS2 ``policy``."""
     found = []
     for dirpath, dirnames, filenames in inventory.walk(root, None):
@@ -73,9 +73,9 @@ def policy_files(root: Path, diagnostics: list[Diagnostic]) -> list[str]:
             if name.endswith(".xml") and name != "package.xml":
                 path = Path(dirpath) / name
                 try:
-                    head = read_text(path, root, 4096 * 16)[:4096]
+                    head = read_text(path, root)[:4096]
                 except (OSError, UnsafeFile, UnicodeDecodeError, ValueError):
-                    continue
+                    continue  # too large or not text: no policy file
                 if "<policy" in head and "<enclaves" in head:
                     found.append(path.relative_to(root).as_posix())
     return sorted(found)
@@ -154,6 +154,10 @@ class _Reader:
                 out += self.expanded(included.children, target, depth + 1)
             elif posixpath.basename(href) not in BUILT_IN_INCLUDES:
                 self.open = True
+                self.diagnostics.append(Diagnostic(
+                    where, element.line, f"SROS2 policy include '{href}' not read: what it grants is "
+                                         "unknown, so the profile that includes it is not judged (ROS206)",
+                    "info"))
         return out
 
     def profiles(self, enclave: Element) -> list[PolicyProfile]:
