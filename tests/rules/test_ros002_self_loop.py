@@ -59,6 +59,14 @@ def test_a_topic_two_nodes_each_publish_and_subscribe_is_a_shared_bus():
     # A state channel: each node announces on it and listens to the others.
     g = graph(node("a", pub("/state"), sub("/state")), node("b", pub("/state"), sub("/state")))
     assert report(g, select=["ROS002"]) == []
+    # One program made under two names (one creation site), or a second node of unknown name,
+    # is no second member: ``ros2 doctor hello`` hears its own greetings.
+    g = graph(node("hello_a", pub("/canyouhearme"), sub("/canyouhearme"), path="hello.py"),
+              node("hello_b", pub("/canyouhearme"), sub("/canyouhearme"), path="hello.py"))
+    assert len(report(g, select=["ROS002"])) == 2
+    g = graph(node("hello", pub("/canyouhearme"), sub("/canyouhearme"), path="hello.py"),
+              node(None, pub("/canyouhearme"), sub("/canyouhearme"), path="other.py"))
+    assert len(report(g, select=["ROS002"])) == 2
     # Two nodes of one name are one program's alternatives or instances: each hears only itself.
     g = graph(node("a", pub("/state"), sub("/state")), node("a", pub("/state"), sub("/state"), path="a2.py"))
     assert report(g, select=["ROS002"]) == ["ROS002 a.py:3", "ROS002 a2.py:3"]

@@ -4,7 +4,7 @@ from __future__ import annotations
 from collections import defaultdict
 from typing import Iterator
 
-from ..graph.model import Entity, RosGraph, RosNode
+from ..graph.model import Entity, Location, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .exempt import ExemptNames
 from .fixtures import node_scope
@@ -112,22 +112,26 @@ def _shared_buses(graph: RosGraph) -> frozenset[str]:
     A state or heartbeat channel (``/llm_state``: each stage of a pipeline announces its state
     and listens for the others') is a bus the nodes share on purpose: each one's subscription
     is there to hear the other publishers. A subscription renamed by mistake to a node's own
-    output makes a loop on one node only, or one of another type. Nodes of one name are
-    alternatives or instances of one program, not several members; a test fixture is a system
-    of its own (a harness hearing its own command), no member of the production bus.
+    output makes a loop on one node only, or one of another type. Nodes of one name, or made
+    at one place (one program under two names), or of an unknown name are alternatives or
+    instances of one program, not several members; a test fixture is a system of its own (a
+    harness hearing its own command), no member of the production bus.
     """
-    looping: dict[str, set[str | int]] = defaultdict(set)
+    looping: dict[str, set[str]] = defaultdict(set)
+    sites: dict[str, set[Location]] = defaultdict(set)
     types: dict[str, set[str]] = defaultdict(set)
     for node in graph.nodes:
-        if node_scope(node) is not None:
-            continue
+        if node_scope(node) is not None or node.fqn is None:
+            continue  # an unknown name may be the same node's
         published = {p.name: p for p in node.of_kind("publishers") if p.name is not None and not p.partial}
         for sub in node.of_kind("subscriptions"):
             pub = published.get(sub.name)
             if pub is not None and not sub.partial and _same_type(pub, sub):
-                looping[sub.name].add(node.fqn or id(node))
+                looping[sub.name].add(node.fqn)
+                sites[sub.name].add(node.location)
                 types[sub.name].update(t for t in (pub.type, sub.type) if t is not None)
-    return frozenset(name for name, nodes in looping.items() if len(nodes) > 1 and len(types[name]) <= 1)
+    return frozenset(name for name, nodes in looping.items()
+                     if len(nodes) > 1 and len(sites[name]) > 1 and len(types[name]) <= 1)
 
 
 def _absolute(entity: Entity) -> bool:
