@@ -361,7 +361,6 @@ class UsageBuilder:
 
     # -- parameters --------------------------------------------------------------------
     def _node_parameters(self) -> dict[str, NodeParameters]:
-        open_: dict[str, bool] = {}
         allows_undeclared: dict[str, bool] = {}
         locations: dict[str, Location] = {}
         for eff in self.effects:
@@ -370,9 +369,9 @@ class UsageBuilder:
             allows = any(name in dict(eff.args) and eff.arg(name).consts() != [False]
                          for name in ("allow_undeclared", "auto_declare"))
             for site in _obj_sites(eff.arg("target")) or ():
-                open_[site] = open_.get(site, False) or allows
                 allows_undeclared[site] = allows_undeclared.get(site, False) or allows
                 locations.setdefault(site, _loc(eff))
+        open_ = dict(allows_undeclared)  # and, below, a node declaring a name not known
         declared: dict[str, set[str]] = {site: set() for site in open_}
         for eff in self.effects:
             if eff.kind not in ("parameter", "parameters"):
@@ -522,34 +521,27 @@ class UsageBuilder:
                     if nodes is not None and len(nodes) == 1:
                         destroyed.setdefault(next(iter(nodes)), i)
 
-    def _nodes_made(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
+    def _nodes_made(self, site: CallSite, memo: dict) -> frozenset[str]:
         """The object sites of the nodes the call may make, on any path through it."""
-        if site.callee[0] == "lib":
-            return frozenset().union(*(
-                _obj_sites(eff.arg("target")) or () for eff in site.effects if eff.kind == "node"))
-        task = site.callee[1]
-        if task not in memo:
-            memo[task] = frozenset()  # recursion: nothing known
-            memo[task] = frozenset().union(*(
-                self._nodes_made(s, memo, depth + 1) for s in self.calls.sites(task))) \
-                if depth < 8 else frozenset()
-        return memo[task]
+        return self._through_calls(site, memo, _made_nodes, every_path=False)
 
-    def _creates_on(self, site: CallSite, memo: dict, depth: int = 0) -> frozenset[str]:
+    def _creates_on(self, site: CallSite, memo: dict) -> frozenset[str]:
         """The nodes the call creates an entity on, on every path through it."""
+        return self._through_calls(site, memo, _entity_nodes, every_path=True)
+
+    def _through_calls(self, site: CallSite, memo: dict, from_library, every_path: bool,
+                       depth: int = 0) -> frozenset[str]:
+        """What ``from_library`` reads off the library calls ``site`` reaches (through workspace
+        calls on every path, or on any), memoised by task."""
         if site.callee[0] == "lib":
-            out = set()
-            for eff in site.effects:
-                nodes = _obj_sites(eff.arg("node")) if eff.kind in ENTITY_EFFECTS else None
-                if nodes is not None and len(nodes) == 1:
-                    out |= nodes
-            return frozenset(out)
+            return from_library(site)
         task = site.callee[1]
         if task not in memo:
             memo[task] = frozenset()  # recursion: nothing known
             memo[task] = frozenset().union(*(
-                self._creates_on(s, memo, depth + 1) for s in self.calls.sites(task)
-                if not s.conditional and not s.guarded)) if depth < 8 else frozenset()
+                self._through_calls(s, memo, from_library, every_path, depth + 1)
+                for s in self.calls.sites(task) if not every_path or not (s.conditional or s.guarded))) \
+                if depth < 8 else frozenset()
         return memo[task]
 
     def _creates_node(self, site: CallSite, memo: dict, depth: int = 0) -> bool:
@@ -583,6 +575,22 @@ class UsageBuilder:
             out.append(PeriodArgument(_loc(eff), what, tuple(consts) if consts else None,
                                       eff.conditional, bool(timer and timer & stopped)))
         return out
+
+
+def _made_nodes(site: CallSite) -> frozenset[str]:
+    """The object sites of the nodes a library call makes."""
+    return frozenset().union(*(_obj_sites(eff.arg("target")) or () for eff in site.effects
+                               if eff.kind == "node"))
+
+
+def _entity_nodes(site: CallSite) -> frozenset[str]:
+    """The node a library call creates an entity on, when it is one known node."""
+    out: set[str] = set()
+    for eff in site.effects:
+        nodes = _obj_sites(eff.arg("node")) if eff.kind in ENTITY_EFFECTS else None
+        if nodes is not None and len(nodes) == 1:
+            out |= nodes
+    return frozenset(out)
 
 
 def _custom_context(eff: Effect) -> bool:
