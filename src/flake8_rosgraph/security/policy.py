@@ -90,11 +90,11 @@ def read_policies(root: Path, files: list[str], diagnostics: list[Diagnostic]) -
         except _Unread as why:
             diagnostics.append(Diagnostic(rel, why.line, f"SROS2 policy not read: {why}"))
             continue
-        reader = _Reader(root, rel, diagnostics)
+        reader = _Reader(root, diagnostics)
         for enclaves in _children(element, "enclaves"):
-            for enclave in reader.expanded(enclaves.children, rel, 0):
+            for enclave, where in reader.expanded(enclaves.children, rel)[0]:
                 if enclave.tag == "enclave":
-                    profiles += reader.profiles(enclave)
+                    profiles += reader.profiles(enclave, where)
     return profiles
 
 
@@ -129,18 +129,21 @@ def _absolute(name: str, namespace: str, node: str) -> str:
 
 
 class _Reader:
-    """Reads the enclaves and profiles of one policy file, following its includes."""
+    """Reads the enclaves and profiles of policy files, following their includes."""
 
-    def __init__(self, root: Path, rel: str, diagnostics: list[Diagnostic]) -> None:
-        self.root, self.rel, self.diagnostics = root, rel, diagnostics
-        self.open = False  # an include of the profile being read could not be followed
+    def __init__(self, root: Path, diagnostics: list[Diagnostic]) -> None:
+        self.root, self.diagnostics = root, diagnostics
 
-    def expanded(self, elements: list[Element], where: str, depth: int) -> list[Element]:
-        """``elements`` with each ``xi:include`` replaced by the included root's children."""
-        out: list[Element] = []
+    def expanded(self, elements: list[Element], where: str, depth: int = 0
+                 ) -> tuple[list[tuple[Element, str]], bool]:
+        """``elements`` (of file ``where``) with each ``xi:include`` replaced by the included
+        root's children, each with the file it stands in; and whether an include could not be
+        read (what it grants is unknown)."""
+        out: list[tuple[Element, str]] = []
+        unread = False
         for element in elements:
             if element.tag.rsplit(":", 1)[-1] != "include" or "href" not in element.attrs:
-                out.append(element)
+                out.append((element, where))
                 continue
             href = element.attrs["href"]
             target = posixpath.normpath(posixpath.join(posixpath.dirname(where), href))
@@ -151,28 +154,30 @@ class _Reader:
                 except _Unread:
                     included = None
             if included is not None:
-                out += self.expanded(included.children, target, depth + 1)
+                inner, inner_unread = self.expanded(included.children, target, depth + 1)
+                out += inner
+                unread |= inner_unread
             elif posixpath.basename(href) not in BUILT_IN_INCLUDES:
-                self.open = True
+                unread = True
                 self.diagnostics.append(Diagnostic(
                     where, element.line, f"SROS2 policy include '{href}' not read: what it grants is "
-                                         "unknown, so the profile that includes it is not judged (ROS206)",
+                                         "unknown, so the profiles it holds or adds to are not judged (ROS206)",
                     "info"))
-        return out
+        return out, unread
 
-    def profiles(self, enclave: Element) -> list[PolicyProfile]:
+    def profiles(self, enclave: Element, where: str) -> list[PolicyProfile]:
         out = []
         for profiles in _children(enclave, "profiles"):
-            for profile in self.expanded(profiles.children, self.rel, 0):
+            for profile, source in self.expanded(profiles.children, where)[0]:
                 if profile.tag != "profile" or "node" not in profile.attrs:
                     continue
                 namespace = "/" + profile.attrs.get("ns", "/").strip("/")
                 node = profile.attrs["node"]
-                self.open = False
-                rules = tuple(self._rules(self.expanded(profile.children, self.rel, 0), namespace, node))
-                out.append(PolicyProfile(Location(self.rel, profile.line, profile.column),
+                elements, unread = self.expanded(profile.children, source)
+                rules = tuple(self._rules([e for e, _ in elements], namespace, node))
+                out.append(PolicyProfile(Location(source, profile.line, profile.column),
                                          enclave.attrs.get("path", "/"), posixpath.join(namespace, node),
-                                         rules, self.open))
+                                         rules, unread))
         return out
 
     @staticmethod
