@@ -32,8 +32,8 @@ class SelfLoop(Rule):
     makes a loop, nor does one rclpy rejects (ROS006: that end never exists), nor a name known only partly (`param if launched else '/scan'`). A node that launch files start in a namespace (one per robot)
     and that publishes and subscribes an absolute name is not reported: the
     absolute name is a bus its instances share on purpose (a swarm's votes),
-    and each instance hears the others. A topic that two or more nodes of different names
-    each publish and subscribe with one type is a channel they share on purpose
+    and each instance hears the others. A topic that two or more nodes of different names,
+    made at different places, each publish and subscribe with one type is a channel they share on purpose
     (each stage of a pipeline announces its state and follows the others'): it
     is not reported for any of them. A node class instantiated by several executables that each
     add entities from their own module (a reader executable publishing what a

@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Iterator
 
 from ..graph import names
-from ..graph.model import Entity, RosGraph, RosNode
+from ..graph.model import Entity, Location, RosGraph, RosNode
 from .base import Finding, Rule, RuleConfig
 from .launch_context import in_package, packages_maybe_namespaced
 from .vocabulary import NAME_NOUN
@@ -103,7 +103,7 @@ class InvalidName(Rule):
 
     def check(self, graph: RosGraph, config: RuleConfig) -> Iterator[Finding]:
         namespaced = packages_maybe_namespaced(graph)
-        reported: set = set()
+        reported: set[Location] = set()
         for node in graph.nodes:
             if node.invalid:
                 yield Finding(node.location, self.code, f"rcl rejects node '{_node_label(node)}': {node.invalid}")
@@ -121,7 +121,7 @@ class InvalidName(Rule):
         yield from _as_written(graph, reported)
 
 
-def _as_written(graph: RosGraph, reported: set) -> Iterator[Finding]:
+def _as_written(graph: RosGraph, reported: set[Location]) -> Iterator[Finding]:
     """Names rcl rejects when a launched node runs as written (``ros2 run``): a parameter's
     default in code that the launch file's value replaces (a space slipped into the default
     topic crashes the node started without that launch file)."""
